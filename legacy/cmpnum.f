@@ -1,0 +1,48 @@
+C=======================================================================
+C     CMPNUM - PUNCH ONE NUMBER OF A FRAME WITH ITS ADDRESS    (SHARED)
+C     SOURCE:  REPORT, TABLE I AND EXAMPLES 1-5: THE ADDRESS CODE, THE
+C              MINUS CODE IF NEGATIVE, THE DECIMAL DIGITS WITHOUT
+C              LEADING ZEROS; "PRI RAVENSTVE NULYU KAKOGO-LIBO CHISLA
+C              EGO KOD (PRIZNAK) V KADRE NE ZAPISYVAETSYA" (A ZERO
+C              NUMBER IS NOT PUNCHED, NOR ITS ADDRESS).
+C     IU      (INPUT)  INTEGER    THE TAPE UNIT
+C     IADR    (INPUT)  INTEGER    THE ADDRESS CODE (X, Y, DX, DY, CYC)
+C     IVAL    (INPUT)  INTEGER    THE NUMBER
+C     ICOD    (INPUT)  INTEGER    1 = "8" CODE, 2 = WITH CONTROL
+C     ANAME   (INPUT)  CHARACTER  THE ADDRESS IN THE FRAME TEXT
+C     LINE    (IN/OUT) CHARACTER  THE FRAME TEXT SO FAR
+C     LL      (IN/OUT) INTEGER    ITS LENGTH
+C     NROW    (IN/OUT) INTEGER    ROWS PUNCHED ON THIS TAPE
+C     CHANGES: 2026-11-22 FIRST RECONSTRUCTION
+C=======================================================================
+      SUBROUTINE CMPNUM(IU, IADR, IVAL, ICOD, ANAME, LINE, LL, NROW)
+      IMPLICIT NONE
+      INTEGER IU, IADR, IVAL, ICOD, LL, NROW
+      CHARACTER*(*) ANAME, LINE
+C     ---- /CMCOD/ THE EM-703 TAPE CODE, REPORT TABLE I ----------------
+      INTEGER ICDIG(0:9,2), ICX, ICY, ICDX, ICDY, ICCYC, ICK, ICKK,
+     1        ICGM, ICMIN
+      COMMON /CMCOD/ ICDIG, ICX, ICY, ICDX, ICDY, ICCYC, ICK, ICKK,
+     1               ICGM, ICMIN
+C     ---- LOCAL -------------------------------------------------------
+      CHARACTER*12 S
+      INTEGER LS, I, ID
+C
+      IF (IVAL .EQ. 0) RETURN
+      CALL CMITOA(IVAL, S, LS)
+      CALL DVPNCH(IU, IADR)
+      NROW = NROW + 1
+      DO 10 I = 1, LS
+         IF (S(I:I) .EQ. '-') THEN
+            CALL DVPNCH(IU, ICMIN)
+         ELSE
+            ID = ICHAR(S(I:I)) - ICHAR('0')
+            CALL DVPNCH(IU, ICDIG(ID, ICOD))
+         END IF
+         NROW = NROW + 1
+   10 CONTINUE
+      LINE(LL+1:) = ANAME // S(1:LS) // ' '
+      LL = LL + LEN(ANAME) + LS + 1
+      RETURN
+C     END OF CMPNUM
+      END

@@ -1,0 +1,24 @@
+C=======================================================================
+C     CMRET  - END THE TAPE RAISED AT ITS START POINT         (SHARED)
+C     SOURCE:  RECONSTRUCTED, SPEC 3: EVERY TAPE ENDS, TOOL RAISED, AT
+C              ITS START POINT, SO THAT THE NEXT TAPE OF THE BOARD CAN
+C              BE LOADED WITHOUT MOVING THE TOOL AND THE LAYERS STAY
+C              REGISTERED. USES THE END STATE LEFT BY CMSIM.
+C     CHANGES: 2026-11-22 FIRST RECONSTRUCTION
+C=======================================================================
+      SUBROUTINE CMRET
+      IMPLICIT NONE
+C     ---- /CMSTA/ WHAT THE SIMULATED MACHINE DID WITH EACH TAPE -------
+      DOUBLE PRECISION DRAWN(3), TRAVL(3), RTIME(3), BBOX(4)
+      INTEGER NFRT(3), NROWT(3), IENDX, IENDY, IENDT
+      COMMON /CMSTA/ DRAWN, TRAVL, RTIME, BBOX, NFRT, NROWT, IENDX,
+     1               IENDY, IENDT
+C
+      IF (IENDX .NE. 0 .OR. IENDY .NE. 0) THEN
+         CALL CMFADD(0, 0, -IENDX, -IENDY, 0, 20, 0, 1)
+      ELSE IF (IENDT .EQ. 1) THEN
+         CALL CMFADD(0, 0, 0, 0, 0, 20, 0, 1)
+      END IF
+      RETURN
+C     END OF CMRET
+      END

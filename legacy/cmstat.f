@@ -1,0 +1,56 @@
+C=======================================================================
+C     CMSTAT - PRINT THE STATISTICS OF A PUNCHED TAPE          (SHARED)
+C     SOURCE:  RECONSTRUCTED, SPEC 6: FRAMES, ROWS, TAPE LENGTH (2.54
+C              MM A ROW), DRAWN AND TRAVEL LENGTH, ESTIMATED RUN TIME AT
+C              THE SPEEDS OF THE REPORT (5.5 M/MIN LINES AND TRAVEL,
+C              1.5 M/MIN ARCS).
+C     IU      (INPUT)  INTEGER  THE TAPE: 1 SMALL, 2 LARGE, 3 COND
+C     CHANGES: 2026-11-22 FIRST RECONSTRUCTION
+C=======================================================================
+      SUBROUTINE CMSTAT(IU)
+      IMPLICIT NONE
+      INTEGER IU
+C     ---- /TZPKG/ THE PACKAGE: P CARD PARAMETERS, ITS CARD IMAGES ---
+      INTEGER MXCRD
+      PARAMETER (MXCRD = 200000)
+      INTEGER LPKG, ICFST, NPCRD, NPERR, LECHO, IPCRD, LGEOM,
+     1        IX0, IY0, IWT(3), IDMAX, ISCN, ISCD, ICODE, IORD
+      COMMON /TZPKG/ LPKG, ICFST, NPCRD, NPERR, LECHO, IPCRD, LGEOM,
+     1               IX0, IY0, IWT, IDMAX, ISCN, ISCD, ICODE, IORD
+      CHARACTER*18 PKNAME
+      CHARACTER*24 PKFILE
+      CHARACTER*80 CIMG(MXCRD)
+      COMMON /TZPKGC/ PKNAME, PKFILE, CIMG
+C     ---- /CMSTA/ WHAT THE SIMULATED MACHINE DID WITH EACH TAPE -------
+      DOUBLE PRECISION DRAWN(3), TRAVL(3), RTIME(3), BBOX(4)
+      INTEGER NFRT(3), NROWT(3), IENDX, IENDY, IENDT
+      COMMON /CMSTA/ DRAWN, TRAVL, RTIME, BBOX, NFRT, NROWT, IENDX,
+     1               IENDY, IENDT
+C     ---- LOCAL -------------------------------------------------------
+      CHARACTER*128 LINE
+      CHARACTER*12 WHAT(3), SUF(3)
+      CHARACTER*12 S1
+      INTEGER L, L1, LS
+      CHARACTER*1 TNAME(3)
+      DATA TNAME / 'S', 'B', 'L' /
+      DATA WHAT / 'SMALL PADS', 'LARGE PADS', 'CONDUCTORS' /
+      DATA SUF / '-small.ptp', '-large.ptp', '-cond.ptp' /
+C
+      CALL CMTRIM(PKFILE, L)
+      CALL CMTRIM(SUF(IU), LS)
+      CALL CMFMM(IWT(IU), S1, L1)
+      CALL DVPRNT(' ')
+      CALL DVPRNT(' TAPE ' // TNAME(IU) // '  ' // WHAT(IU) //
+     1   'FILE ' // PKFILE(1:L) // SUF(IU)(1:LS) // '   TOOL ' //
+     2   S1(1:L1) // ' MM')
+      WRITE (LINE, 100) NFRT(IU), NROWT(IU), NROWT(IU) * 2.54D0 / 1.0D3
+      CALL DVPRNT(LINE)
+      WRITE (LINE, 110) DRAWN(IU), TRAVL(IU), RTIME(IU)
+      CALL DVPRNT(LINE)
+      RETURN
+  100 FORMAT (8X, 'FRAMES', I9, '   ROWS', I10, '   TAPE LENGTH',
+     1        F11.2, ' M')
+  110 FORMAT (8X, 'DRAWN', F14.2, ' MM   TRAVEL', F14.2,
+     1        ' MM   RUN TIME', F10.2, ' MIN')
+C     END OF CMSTAT
+      END

@@ -1,0 +1,177 @@
+C=======================================================================
+C     TENZOR - READ THE CARD DECK, PUNCH THE EM-703 TAPES     (TENZOR)
+C     SOURCE:  REPORT P11-10356, "SOSTAV PROGRAMMNOGO OBESPECHENIYA"
+C              AND "PAKET ZADACHI"; SPEC SECTIONS 4-6.
+C     THE DECK IS AN OPTIONAL JOB ENVELOPE (CONTROL CARDS WITH * OR #
+C     IN COLUMN 1, ENDED BY *EXECUTE), THEN PACKAGES: A NAME CARD, DATA
+C     CARDS, AND A CARD WITH C (ANOTHER PACKAGE FOLLOWS) OR E (THE END)
+C     IN COLUMN 1; *END FILE, OR THE END OF THE DECK, CLOSES THE JOB.
+C     FOR EACH PACKAGE WITHOUT ERRORS THREE TAPES ARE PUNCHED: SMALL
+C     PADS, LARGE PADS (BOTH M703T) AND CONDUCTORS (M703L).
+C     THE MONITOR GIVES TENZOR ITS DEVICES: DVCARD READS A CARD, DVPRNT
+C     PRINTS A LINE, DVPNCH PUNCHES A ROW, DVERR WRITES TO THE CONSOLE.
+C     ICODEA  (INPUT)  INTEGER  TAPE CODE ASKED BY THE OPERATOR: 0 = AS
+C                               THE P CARD SAYS, 1 = "8", 2 = "8" WITH
+C                               CONTROL
+C     IRC     (OUTPUT) INTEGER  0 = ALL PACKAGES PUNCHED, 1 = THE DECK
+C                               HAD ERRORS (SEE THE LISTINGS)
+C     CHANGES: 2026-11-22 FIRST RECONSTRUCTION
+C=======================================================================
+      SUBROUTINE TENZOR(ICODEA, IRC)
+      IMPLICIT NONE
+      INTEGER ICODEA, IRC
+C     ---- /TZJOB/ THE JOB: CARD COUNT, ENVELOPE, PACKAGE NAMES ------
+      INTEGER MXENV, MXPKG
+      PARAMETER (MXENV = 20, MXPKG = 10000)
+      INTEGER NCARD, JOBERR, ICODEO, NENV, NPKG, IRCJOB, LEXEC, LENV
+      COMMON /TZJOB/ NCARD, JOBERR, ICODEO, NENV, NPKG, IRCJOB, LEXEC,
+     1               LENV
+      CHARACTER*80 ENVC(MXENV)
+      CHARACTER*24 PKNAMS(MXPKG)
+      CHARACTER*40 JOBNAM
+      CHARACTER*80 CURC
+      COMMON /TZJOBC/ ENVC, PKNAMS, JOBNAM, CURC
+C     ---- /TZPKG/ THE PACKAGE: P CARD PARAMETERS, ITS CARD IMAGES ---
+      INTEGER MXCRD
+      PARAMETER (MXCRD = 200000)
+      INTEGER LPKG, ICFST, NPCRD, NPERR, LECHO, IPCRD, LGEOM,
+     1        IX0, IY0, IWT(3), IDMAX, ISCN, ISCD, ICODE, IORD
+      COMMON /TZPKG/ LPKG, ICFST, NPCRD, NPERR, LECHO, IPCRD, LGEOM,
+     1               IX0, IY0, IWT, IDMAX, ISCN, ISCD, ICODE, IORD
+      CHARACTER*18 PKNAME
+      CHARACTER*24 PKFILE
+      CHARACTER*80 CIMG(MXCRD)
+      COMMON /TZPKGC/ PKNAME, PKFILE, CIMG
+C     ---- LOCAL -------------------------------------------------------
+C     ISTATE  1 = BEFORE THE DATA (THE ENVELOPE), 2 = A NAME CARD IS
+C             DUE (AFTER *EXECUTE OR C), 3 = IN A PACKAGE, 4 = AFTER
+C             THE E CARD, 5 = AFTER *END FILE (NOTHING MORE IS READ)
+      INTEGER ISTATE, IEND, IBAD, IBCOL, IKEY, LAFTC
+      CHARACTER*80 CARD
+      CHARACTER*100 MSG
+      CHARACTER*1 CH
+      EXTERNAL TZBD
+C
+      NCARD = 0
+      JOBERR = 0
+      ICODEO = ICODEA
+      NENV = 0
+      NPKG = 0
+      IRCJOB = 0
+      LEXEC = 0
+      LENV = 0
+      LPKG = 0
+      JOBNAM = ' '
+      ISTATE = 1
+      LAFTC = 0
+C     ---- NEXT CARD ---------------------------------------------------
+   10 CONTINUE
+      CALL TZCARD(CARD, IEND, IBAD, IBCOL, MSG)
+      IF (IEND .NE. 0) GOTO 80
+      CH = CARD(1:1)
+      IKEY = 0
+      IF (CH .EQ. '*' .OR. CH .EQ. '#') CALL TZCKEY(CARD, IKEY)
+      GOTO (100, 200, 300, 400, 90), ISTATE
+C     ---- STATE 1: BEFORE THE DATA ------------------------------------
+  100 CONTINUE
+      IF (IBAD .NE. 0) THEN
+         CALL CMERR('TENZOR', NCARD, IBCOL, MSG)
+         GOTO 10
+      END IF
+      IF (CARD .EQ. ' ') GOTO 10
+      IF (CH .EQ. '*' .OR. CH .EQ. '#') THEN
+         CALL TZCTRL(CARD, IKEY)
+         IF (IKEY .EQ. 9) ISTATE = 2
+         IF (IKEY .EQ. 10) THEN
+            CALL CMERR('TENZOR', NCARD, 1, '*END FILE BEFORE ANY DATA;'
+     1         // ' EXPECTED *EXECUTE, A NAME CARD AND THE DATA FIRST')
+            ISTATE = 5
+         END IF
+         GOTO 10
+      END IF
+      IF (LENV .EQ. 1 .AND. LEXEC .EQ. 0) THEN
+         CALL CMERR('TENZOR', NCARD, 1, 'DATA BEFORE *EXECUTE; THE '
+     1      // 'JOB ENVELOPE MUST END WITH AN *EXECUTE CARD')
+      END IF
+      CALL TZPBEG(CARD)
+      ISTATE = 3
+      GOTO 10
+C     ---- STATE 2: A NAME CARD IS DUE ---------------------------------
+  200 CONTINUE
+      IF (IBAD .NE. 0) THEN
+         CALL CMERR('TENZOR', NCARD, IBCOL, MSG)
+         GOTO 10
+      END IF
+      IF (CARD .EQ. ' ') GOTO 10
+      IF (IKEY .EQ. 10) THEN
+         IF (LAFTC .EQ. 1) CALL CMERR('TENZOR', NCARD, 1, 'THE LAST '
+     1      // 'PACKAGE ENDED WITH C BUT NO PACKAGE FOLLOWS; END IT '
+     2      // 'WITH E')
+         ISTATE = 5
+         GOTO 10
+      END IF
+      IF (CH .EQ. '*' .OR. CH .EQ. '#') THEN
+         CALL CMERR('TENZOR', NCARD, 1, 'CONTROL CARD AFTER *EXECUTE;'
+     1      // ' EXPECTED A PACKAGE NAME CARD (COLS 1-18)')
+         GOTO 10
+      END IF
+      CALL TZPBEG(CARD)
+      ISTATE = 3
+      GOTO 10
+C     ---- STATE 3: IN A PACKAGE ---------------------------------------
+  300 CONTINUE
+      CALL TZECHO(CARD)
+      IF (IBAD .NE. 0) CALL CMERR('TENZOR', NCARD, IBCOL, MSG)
+      IF (CH .EQ. 'C') THEN
+         CALL TZPEND
+         ISTATE = 2
+         LAFTC = 1
+      ELSE IF (CH .EQ. 'E') THEN
+         CALL TZPEND
+         ISTATE = 4
+      ELSE IF (IKEY .EQ. 10) THEN
+         CALL CMERR('TENZOR', NCARD, 1, '*END FILE BEFORE THE E CARD;'
+     1      // ' THE LAST PACKAGE MUST END WITH E IN COL 1')
+         CALL TZPEND
+         ISTATE = 5
+      ELSE IF (IBAD .EQ. 0) THEN
+         CALL TZDATA(CARD)
+      END IF
+      GOTO 10
+C     ---- STATE 4: AFTER THE E CARD -----------------------------------
+  400 CONTINUE
+      IF (IBAD .NE. 0) THEN
+         CALL CMERR('TENZOR', NCARD, IBCOL, MSG)
+         GOTO 10
+      END IF
+      IF (CARD .EQ. ' ') GOTO 10
+      IF (IKEY .EQ. 10) THEN
+         ISTATE = 5
+         GOTO 10
+      END IF
+      CALL CMERR('TENZOR', NCARD, 1, 'CARD AFTER THE FINAL E CARD; END'
+     1   // ' THE PACKAGE BEFORE WITH C TO START ANOTHER ONE')
+      GOTO 10
+C     ---- THE END OF THE DECK -----------------------------------------
+   80 CONTINUE
+      IF (ISTATE .EQ. 1) THEN
+         CALL CMERR('TENZOR', 0, 1, 'THE DECK HOLDS NO PACKAGE; '
+     1      // 'EXPECTED A NAME CARD, DATA CARDS AND AN E CARD')
+      ELSE IF (ISTATE .EQ. 2) THEN
+         IF (LAFTC .EQ. 1) THEN
+            CALL CMERR('TENZOR', 0, 1, 'THE LAST PACKAGE ENDED WITH C '
+     1         // 'BUT NO PACKAGE FOLLOWS; END IT WITH E')
+         ELSE
+            CALL CMERR('TENZOR', 0, 1, 'NO PACKAGE AFTER *EXECUTE; '
+     1         // 'EXPECTED A NAME CARD, DATA CARDS AND AN E CARD')
+         END IF
+      ELSE IF (ISTATE .EQ. 3) THEN
+         CALL CMERR('TENZOR', 0, 1, 'THE DECK ENDS WITHOUT THE E CARD;'
+     1      // ' THE LAST PACKAGE MUST END WITH E IN COL 1')
+         CALL TZPEND
+      END IF
+   90 CONTINUE
+      IRC = IRCJOB
+      RETURN
+C     END OF TENZOR
+      END

@@ -1,0 +1,52 @@
+C=======================================================================
+C     TZCKEY - WHICH CONTROL CARD IS THIS                     (TENZOR)
+C     SOURCE:  REPORT, "PAKET ZADACHI" (THE MONITOR "DUBNA" CARDS);
+C              SPEC 5.1. THE REPORT'S REPRODUCTION PRINTS # FOR * AND
+C              _ FOR A BLANK, IN LOWER CASE; ALL OF THAT IS ACCEPTED.
+C     CARD    (INPUT)  CHARACTER*80  A CARD WITH * OR # IN COLUMN 1
+C     IKEY    (OUTPUT) INTEGER  1 NAME, 2 TIME, 3 PASS, 4 TAPE,
+C                               5 PERSO, 6 MAIN, 7 NO LOAD LIST,
+C                               8 CALL, 9 EXECUTE, 10 END FILE,
+C                               0 NOT A CONTROL CARD OF THE MONITOR
+C     CHANGES: 2026-11-22 FIRST RECONSTRUCTION
+C=======================================================================
+      SUBROUTINE TZCKEY(CARD, IKEY)
+      IMPLICIT NONE
+      CHARACTER*80 CARD
+      INTEGER IKEY
+C     ---- LOCAL -------------------------------------------------------
+      INTEGER NKEY
+      PARAMETER (NKEY = 10)
+      CHARACTER*10 KEYS(NKEY)
+      INTEGER LKEY(NKEY), I, K, L
+      CHARACTER*80 WORK
+      CHARACTER*1 CH
+      CHARACTER*26 UPPER, LOWER
+      DATA UPPER / 'ABCDEFGHIJKLMNOPQRSTUVWXYZ' /
+      DATA LOWER / 'abcdefghijklmnopqrstuvwxyz' /
+      DATA KEYS / 'NAME', 'TIME', 'PASS', 'TAPE', 'PERSO', 'MAIN',
+     1            'NOLOADLIST', 'CALL', 'EXECUTE', 'ENDFILE' /
+      DATA LKEY / 4, 4, 4, 4, 5, 4, 10, 4, 7, 7 /
+C
+C     THE CARD FROM COLUMN 2, IN UPPER CASE, WITHOUT BLANKS AND _
+      WORK = ' '
+      L = 0
+      DO 10 I = 2, 80
+         CH = CARD(I:I)
+         K = INDEX(LOWER, CH)
+         IF (K .GT. 0) CH = UPPER(K:K)
+         IF (CH .NE. ' ' .AND. CH .NE. '_') THEN
+            L = L + 1
+            WORK(L:L) = CH
+         END IF
+   10 CONTINUE
+      IKEY = 0
+      DO 20 I = 1, NKEY
+         IF (WORK(1:LKEY(I)) .EQ. KEYS(I)(1:LKEY(I))) THEN
+            IKEY = I
+            RETURN
+         END IF
+   20 CONTINUE
+      RETURN
+C     END OF TZCKEY
+      END

@@ -1,0 +1,93 @@
+C=======================================================================
+C     TZJOBS - THE JOB SHEET OF A PUNCHED PACKAGE             (TENZOR)
+C     SOURCE:  RECONSTRUCTED, SPEC 4: PLAIN 'KEY = VALUE' LINES FOR THE
+C              OPERATOR AND FOR THE MODERN TOOLS (WHICH TAPE, WHICH
+C              TOOL, WHICH CODE, WHERE TO SET THE START POINT).
+C     ICOD    (INPUT)  INTEGER  THE CODE PUNCHED: 1 = "8", 2 = CONTROL
+C     CHANGES: 2026-11-22 FIRST RECONSTRUCTION
+C=======================================================================
+      SUBROUTINE TZJOBS(ICOD)
+      IMPLICIT NONE
+      INTEGER ICOD
+C     ---- /TZJOB/ THE JOB: CARD COUNT, ENVELOPE, PACKAGE NAMES ------
+      INTEGER MXENV, MXPKG
+      PARAMETER (MXENV = 20, MXPKG = 10000)
+      INTEGER NCARD, JOBERR, ICODEO, NENV, NPKG, IRCJOB, LEXEC, LENV
+      COMMON /TZJOB/ NCARD, JOBERR, ICODEO, NENV, NPKG, IRCJOB, LEXEC,
+     1               LENV
+      CHARACTER*80 ENVC(MXENV)
+      CHARACTER*24 PKNAMS(MXPKG)
+      CHARACTER*40 JOBNAM
+      CHARACTER*80 CURC
+      COMMON /TZJOBC/ ENVC, PKNAMS, JOBNAM, CURC
+C     ---- /TZPKG/ THE PACKAGE: P CARD PARAMETERS, ITS CARD IMAGES ---
+      INTEGER MXCRD
+      PARAMETER (MXCRD = 200000)
+      INTEGER LPKG, ICFST, NPCRD, NPERR, LECHO, IPCRD, LGEOM,
+     1        IX0, IY0, IWT(3), IDMAX, ISCN, ISCD, ICODE, IORD
+      COMMON /TZPKG/ LPKG, ICFST, NPCRD, NPERR, LECHO, IPCRD, LGEOM,
+     1               IX0, IY0, IWT, IDMAX, ISCN, ISCD, ICODE, IORD
+      CHARACTER*18 PKNAME
+      CHARACTER*24 PKFILE
+      CHARACTER*80 CIMG(MXCRD)
+      COMMON /TZPKGC/ PKNAME, PKFILE, CIMG
+C     ---- /CMSTA/ WHAT THE SIMULATED MACHINE DID WITH EACH TAPE -------
+      DOUBLE PRECISION DRAWN(3), TRAVL(3), RTIME(3), BBOX(4)
+      INTEGER NFRT(3), NROWT(3), IENDX, IENDY, IENDT
+      COMMON /CMSTA/ DRAWN, TRAVL, RTIME, BBOX, NFRT, NROWT, IENDX,
+     1               IENDY, IENDT
+C     ---- LOCAL -------------------------------------------------------
+      DOUBLE PRECISION BIG
+      PARAMETER (BIG = 2.0D9)
+      CHARACTER*6 TAPE(3)
+      CHARACTER*12 S1, S2
+      INTEGER L, L1, L2, LT, IU
+      DATA TAPE / 'small', 'large', 'cond' /
+C
+      CALL CMTRIM(PKFILE, L)
+      CALL DVJOB('# EM-703 job sheet, written by TENZOR (JINR P11-10356'
+     1   // ', reconstruction)')
+      CALL DVJOB('name = ' // PKFILE(1:L))
+      CALL CMTRIM(JOBNAM, L1)
+      IF (L1 .GT. 0) CALL DVJOB('job = ' // JOBNAM(1:L1))
+      IF (ICOD .EQ. 1) THEN
+         CALL DVJOB('code = 8')
+      ELSE
+         CALL DVJOB('code = K')
+      END IF
+      CALL CMITOA(ISCN, S1, L1)
+      CALL CMITOA(ISCD, S2, L2)
+      CALL DVJOB('scale = ' // S1(1:L1) // ':' // S2(1:L2))
+      CALL CMFMM(IX0, S1, L1)
+      CALL DVJOB('start_x_mm = ' // S1(1:L1))
+      CALL CMFMM(IY0, S1, L1)
+      CALL DVJOB('start_y_mm = ' // S1(1:L1))
+      IF (IORD .EQ. 1) THEN
+         CALL DVJOB('order = O')
+      ELSE
+         CALL DVJOB('order = D')
+      END IF
+      CALL CMFMM(IDMAX, S1, L1)
+      CALL DVJOB('dmax_mm = ' // S1(1:L1))
+      DO 10 IU = 1, 3
+         CALL CMTRIM(TAPE(IU), LT)
+         CALL DVJOB(TAPE(IU)(1:LT) // '.tape = ' // PKFILE(1:L) // '-'
+     1      // TAPE(IU)(1:LT) // '.ptp')
+         CALL DVJOB(TAPE(IU)(1:LT) // '.text = ' // PKFILE(1:L) // '-'
+     1      // TAPE(IU)(1:LT) // '.txt')
+         CALL CMFMM(IWT(IU), S1, L1)
+         CALL DVJOB(TAPE(IU)(1:LT) // '.tool_mm = ' // S1(1:L1))
+         CALL CMITOA(NFRT(IU), S1, L1)
+         CALL DVJOB(TAPE(IU)(1:LT) // '.frames = ' // S1(1:L1))
+         CALL CMITOA(NROWT(IU), S1, L1)
+         CALL DVJOB(TAPE(IU)(1:LT) // '.rows = ' // S1(1:L1))
+         CALL CMFMM(NINT(MIN(DRAWN(IU) * 100.0D0, BIG)), S1, L1)
+         CALL DVJOB(TAPE(IU)(1:LT) // '.drawn_mm = ' // S1(1:L1))
+         CALL CMFMM(NINT(MIN(TRAVL(IU) * 100.0D0, BIG)), S1, L1)
+         CALL DVJOB(TAPE(IU)(1:LT) // '.travel_mm = ' // S1(1:L1))
+         CALL CMFMM(NINT(MIN(RTIME(IU) * 100.0D0, BIG)), S1, L1)
+         CALL DVJOB(TAPE(IU)(1:LT) // '.minutes = ' // S1(1:L1))
+   10 CONTINUE
+      RETURN
+C     END OF TZJOBS
+      END

@@ -1,0 +1,130 @@
+C=======================================================================
+C     TZPBEG - BEGIN A PACKAGE AT ITS NAME CARD                (TENZOR)
+C     SOURCE:  REPORT, "PAKET ZADACHI": "P/K S NAZVANIEM DANNYKH V
+C              POZITSIYAKH 1-18"; SPEC 4 (FILE NAMES), 5.2.
+C     THE NAME (COLUMNS 1-18) NAMES THE OUTPUT FILES. IT IS SANITISED:
+C     LEADING AND TRAILING BLANKS DROPPED, ANY CHARACTER BUT A LETTER,
+C     A DIGIT, - AND _ BECOMES _. A NAME ALREADY USED IN THIS JOB IS AN
+C     ERROR, AND THE PACKAGE'S FILES GET A SUFFIX -2, -3, ... SO THAT
+C     NOTHING OF THE EARLIER PACKAGE IS OVERWRITTEN.
+C     CARD    (INPUT)  CHARACTER*80  THE NAME CARD
+C     CHANGES: 2026-11-22 FIRST RECONSTRUCTION
+C=======================================================================
+      SUBROUTINE TZPBEG(CARD)
+      IMPLICIT NONE
+      CHARACTER*80 CARD
+C     ---- /TZJOB/ THE JOB: CARD COUNT, ENVELOPE, PACKAGE NAMES ------
+      INTEGER MXENV, MXPKG
+      PARAMETER (MXENV = 20, MXPKG = 10000)
+      INTEGER NCARD, JOBERR, ICODEO, NENV, NPKG, IRCJOB, LEXEC, LENV
+      COMMON /TZJOB/ NCARD, JOBERR, ICODEO, NENV, NPKG, IRCJOB, LEXEC,
+     1               LENV
+      CHARACTER*80 ENVC(MXENV)
+      CHARACTER*24 PKNAMS(MXPKG)
+      CHARACTER*40 JOBNAM
+      CHARACTER*80 CURC
+      COMMON /TZJOBC/ ENVC, PKNAMS, JOBNAM, CURC
+C     ---- /TZPKG/ THE PACKAGE: P CARD PARAMETERS, ITS CARD IMAGES ---
+      INTEGER MXCRD
+      PARAMETER (MXCRD = 200000)
+      INTEGER LPKG, ICFST, NPCRD, NPERR, LECHO, IPCRD, LGEOM,
+     1        IX0, IY0, IWT(3), IDMAX, ISCN, ISCD, ICODE, IORD
+      COMMON /TZPKG/ LPKG, ICFST, NPCRD, NPERR, LECHO, IPCRD, LGEOM,
+     1               IX0, IY0, IWT, IDMAX, ISCN, ISCD, ICODE, IORD
+      CHARACTER*18 PKNAME
+      CHARACTER*24 PKFILE
+      CHARACTER*80 CIMG(MXCRD)
+      COMMON /TZPKGC/ PKNAME, PKFILE, CIMG
+C     ---- /CMMAN/ MANUAL FRAMES OF M CARDS, IN DECK ORDER -------------
+      INTEGER MXMAN
+      PARAMETER (MXMAN = 20000)
+      INTEGER NMAN, MMTAP(MXMAN), MMX(MXMAN), MMY(MXMAN), MMDX(MXMAN),
+     1        MMDY(MXMAN), MMCYC(MXMAN), MMK(MXMAN), MMCRD(MXMAN)
+      COMMON /CMMAN/ NMAN, MMTAP, MMX, MMY, MMDX, MMDY, MMCYC, MMK,
+     1               MMCRD
+C     ---- LOCAL -------------------------------------------------------
+      CHARACTER*62 OKCH
+      CHARACTER*12 S1
+      CHARACTER*1 CH
+      INTEGER I, IA, IB, L, L1, ISUF, IDUP, LBLNK, LFULLP
+      DATA OKCH / 'ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0
+     1123456789' /
+C
+C     ---- A NEW PACKAGE: DEFAULTS OF THE P CARD (SPEC 5.3) ------------
+      LPKG = 1
+      ICFST = NCARD
+      NPCRD = 0
+      NPERR = 0
+      LECHO = -1
+      IPCRD = 0
+      LGEOM = 0
+      IX0 = 0
+      IY0 = 0
+      IWT(1) = 50
+      IWT(2) = 100
+      IWT(3) = 50
+      IDMAX = 200
+      ISCN = 1
+      ISCD = 1
+      ICODE = 1
+      IORD = 1
+      NMAN = 0
+      CALL TZGCLR
+C     ---- THE FILE NAME -----------------------------------------------
+      PKNAME = CARD(1:18)
+      IA = 0
+      IB = 0
+      DO 10 I = 1, 18
+         IF (CARD(I:I) .NE. ' ') THEN
+            IF (IA .EQ. 0) IA = I
+            IB = I
+         END IF
+   10 CONTINUE
+      PKFILE = ' '
+      LBLNK = 0
+      IF (IA .EQ. 0) THEN
+         PKFILE = 'PACKAGE'
+         LBLNK = 1
+      ELSE
+         DO 20 I = IA, IB
+            CH = CARD(I:I)
+            IF (INDEX(OKCH, CH) .EQ. 0 .AND. CH .NE. '-') CH = '_'
+            PKFILE(I-IA+1:I-IA+1) = CH
+   20    CONTINUE
+      END IF
+C     ---- A NAME USED BEFORE IN THIS JOB GETS A SUFFIX ----------------
+      CALL CMTRIM(PKFILE, L)
+      IDUP = 0
+      ISUF = 1
+   30 CONTINUE
+      DO 40 I = 1, MIN(NPKG, MXPKG)
+         IF (PKNAMS(I) .EQ. PKFILE) THEN
+            IF (IDUP .EQ. 0) IDUP = I
+            ISUF = ISUF + 1
+            CALL CMITOA(ISUF, S1, L1)
+            PKFILE = PKFILE(1:L) // '-' // S1(1:L1)
+            GOTO 30
+         END IF
+   40 CONTINUE
+      NPKG = NPKG + 1
+      LFULLP = 0
+      IF (NPKG .LE. MXPKG) THEN
+         PKNAMS(NPKG) = PKFILE
+      ELSE
+         LFULLP = 1
+      END IF
+C     ---- OPEN THE PACKAGE'S OUTPUT, HEAD THE LISTING, ECHO THE CARD --
+      CALL DVOPEN(PKFILE)
+      CALL TZHEAD
+      CALL TZECHO(CARD)
+      IF (LBLNK .EQ. 1) CALL CMERR('TENZOR', NCARD, 1, 'THE NAME CARD'
+     1   // ' IS BLANK IN COLS 1-18; EXPECTED THE PACKAGE NAME THERE')
+      IF (IDUP .GT. 0) CALL CMERR('TENZOR', NCARD, IA, 'PACKAGE NAME '
+     1   // PKNAMS(IDUP)(1:L) // ' IS ALREADY USED IN THIS JOB; '
+     2   // 'GIVE EACH PACKAGE ITS OWN NAME')
+      IF (LFULLP .EQ. 1) CALL CMERR('TENZOR', NCARD, 1, 'CAPACITY '
+     1   // 'EXCEEDED: MORE THAN 10000 PACKAGES IN ONE JOB (PARAMETER '
+     2   // 'MXPKG); SPLIT THE DECK INTO JOBS')
+      RETURN
+C     END OF TZPBEG
+      END

@@ -1,0 +1,29 @@
+#!/usr/bin/env bash
+# Set up everything the project needs, once; fast when all is already there.
+#   - gfortran (Debian package) compiles the FORTRAN 77 and the modern Fortran;
+#   - .venv/ holds fpm and the Python packages of requirements.txt.
+# Called by `make demo` and `make test`; safe to run again at any time.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+apt_packages=()
+command -v gfortran >/dev/null 2>&1 || apt_packages+=(gfortran)
+python3 -c 'import venv, ensurepip' >/dev/null 2>&1 || apt_packages+=(python3-venv)
+
+if [ ${#apt_packages[@]} -gt 0 ]; then
+    sudo=""
+    [ "$(id -u)" -ne 0 ] && sudo="sudo"
+    echo "setup: installing Debian packages: ${apt_packages[*]}"
+    $sudo apt-get update -qq
+    DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends \
+        "${apt_packages[@]}" >/dev/null
+fi
+
+want=$(sha256sum requirements.txt | cut -d' ' -f1)
+stamp=.venv/.requirements.sha256
+if [ ! -x .venv/bin/python ] || [ "$(cat "$stamp" 2>/dev/null)" != "$want" ]; then
+    echo "setup: installing Python packages into .venv"
+    python3 -m venv .venv
+    .venv/bin/python -m pip install --quiet --disable-pip-version-check -r requirements.txt
+    echo "$want" > "$stamp"
+fi
