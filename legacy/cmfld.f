@@ -64,7 +64,7 @@ C     ---- THE FIELD'S NAME, COLUMNS AND FORMAT ------------------------
       ELSE IF (IERR .EQ. 5) THEN
          MSG = WHERE(1:L1) // ': A NUMBER WITHOUT A POINT MUST END IN '
      1         // 'COL ' // S2(1:L2) // '; RIGHT-JUSTIFY IT'
-         IF (NDEC .GT. 0) MSG(L1+2:) = 'NO POINT, SO IT MUST END IN '
+         IF (NDEC .GT. 0) MSG(L1+3:) = 'NO POINT, SO IT MUST END IN '
      1         // 'COL ' // S2(1:L2) // '; RIGHT-JUSTIFY IT OR ADD A '
      2         // 'POINT'
       ELSE IF (IERR .EQ. 6) THEN

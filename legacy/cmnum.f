@@ -33,8 +33,8 @@ C=======================================================================
       CHARACTER*(*) CARD
       INTEGER IC1, IC2, NDEC, IVAL, LBLANK, IERR, IECOL
 C     ---- LOCAL -------------------------------------------------------
-      INTEGER MAXV
-      PARAMETER (MAXV = 999999999)
+      INTEGER MAXV, MAXV10
+      PARAMETER (MAXV = 999999999, MAXV10 = 99999999)
       INTEGER IA, IB, I, ID, IACC, NFRAC, NDIG, LPOINT, ISIGN, K
       CHARACTER*1 CH
 C
@@ -117,7 +117,7 @@ C        NO POINT: THE LAST NDEC DIGITS ARE THE DECIMALS, AS FW.D
       ELSE
 C        POINT GIVEN: SCALE THE DIGITS READ UP TO NDEC DECIMALS
          DO 30 K = MIN(NFRAC, NDEC) + 1, NDEC
-            IF (10 * IACC .GT. MAXV) THEN
+            IF (IACC .GT. MAXV10) THEN
                IERR = 4
                IECOL = IA
                RETURN

@@ -9,10 +9,10 @@ C=======================================================================
       SUBROUTINE CMRET
       IMPLICIT NONE
 C     ---- /CMSTA/ WHAT THE SIMULATED MACHINE DID WITH EACH TAPE -------
-      DOUBLE PRECISION DRAWN(3), TRAVL(3), RTIME(3), BBOX(4)
+      DOUBLE PRECISION DRAWN(3), TRAVL(3), RTIME(3), BBOX(4), PWIN(4)
       INTEGER NFRT(3), NROWT(3), IENDX, IENDY, IENDT
-      COMMON /CMSTA/ DRAWN, TRAVL, RTIME, BBOX, NFRT, NROWT, IENDX,
-     1               IENDY, IENDT
+      COMMON /CMSTA/ DRAWN, TRAVL, RTIME, BBOX, PWIN, NFRT, NROWT,
+     1               IENDX, IENDY, IENDT
 C
       IF (IENDX .NE. 0 .OR. IENDY .NE. 0) THEN
          CALL CMFADD(0, 0, -IENDX, -IENDY, 0, 20, 0, 1)

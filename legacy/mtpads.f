@@ -1,6 +1,63 @@
-C     MTPADS - PLACEHOLDER
+C=======================================================================
+C     MTPADS - THE PADS OF ONE PAD TAPE                         (M703T)
+C     SOURCE:  REPORT (A SMALL-PAD AND A LARGE-PAD TAPE); SPEC 5.3, 6.
+C              A PAD BELONGS TO THE SMALL-PAD TAPE WHEN ITS SIZE (THE
+C              LARGER OF W AND H) IS AT MOST DMAX. EACH D CARD, A PAD OR
+C              A ROW, IS ONE ITEM OF THE TOUR.
+C     IU      (INPUT)  INTEGER  1 = SMALL PADS, 2 = LARGE PADS
+C     CHANGES: 2026-11-22 FIRST RECONSTRUCTION
+C=======================================================================
       SUBROUTINE MTPADS(IU)
       IMPLICIT NONE
       INTEGER IU
+C     ---- /TZPKG/ THE PACKAGE: P CARD PARAMETERS, ITS CARD IMAGES ---
+      INTEGER MXCRD
+      PARAMETER (MXCRD = 200000)
+      INTEGER LPKG, ICFST, NPCRD, NPERR, LECHO, IPCRD, LGEOM,
+     1        IX0, IY0, IWT(3), IDMAX, ISCN, ISCD, ICODE, IORD
+      COMMON /TZPKG/ LPKG, ICFST, NPCRD, NPERR, LECHO, IPCRD, LGEOM,
+     1               IX0, IY0, IWT, IDMAX, ISCN, ISCD, ICODE, IORD
+      CHARACTER*18 PKNAME
+      CHARACTER*24 PKFILE
+      CHARACTER*80 CIMG(MXCRD)
+      COMMON /TZPKGC/ PKNAME, PKFILE, CIMG
+C     ---- /TZGEO/ THE BOARD: PADS, CONDUCTORS, CIRCLES AND ARCS -------
+      INTEGER MXPAD, MXCON, MXVTX, MXARC
+      PARAMETER (MXPAD = 200000, MXCON = 50000, MXVTX = 200000,
+     1           MXARC = 50000)
+      INTEGER NPAD, KPX(MXPAD), KPY(MXPAD), KPW(MXPAD), KPH(MXPAD),
+     1        KPN(MXPAD), KPSX(MXPAD), KPSY(MXPAD), KPCRD(MXPAD),
+     2        NCON, KCV1(MXCON), KCV2(MXCON), KCW(MXCON), KCCRD(MXCON),
+     3        NVTX, KVX(MXVTX), KVY(MXVTX), KVCRD(MXVTX),
+     4        NARC, KAX(MXARC), KAY(MXARC), KADX(MXARC), KADY(MXARC),
+     5        KAXS(MXARC), KAYS(MXARC), KAK(MXARC), KACRD(MXARC),
+     6        LCOPEN, LGFULL
+      COMMON /TZGEO/ NPAD, KPX, KPY, KPW, KPH, KPN, KPSX, KPSY, KPCRD,
+     1               NCON, KCV1, KCV2, KCW, KCCRD, NVTX, KVX, KVY,
+     2               KVCRD, NARC, KAX, KAY, KADX, KADY, KAXS, KAYS,
+     3               KAK, KACRD, LCOPEN, LGFULL
+C     ---- /CMITM/ THE ITEMS OF A TAPE AND THE TOUR THROUGH THEM -------
+      INTEGER MXITM
+      PARAMETER (MXITM = 300000)
+      INTEGER NITM, IKND(MXITM), IREF(MXITM), IEX(MXITM), IEY(MXITM),
+     1        IXX(MXITM), IXY(MXITM), ITOUR(MXITM), IPOS(MXITM),
+     2        IORI(MXITM)
+      COMMON /CMITM/ NITM, IKND, IREF, IEX, IEY, IXX, IXY, ITOUR, IPOS,
+     1               IORI
+C     ---- LOCAL -------------------------------------------------------
+      INTEGER I, IC
+C
+      NITM = 0
+      DO 10 I = 1, NPAD
+         IC = 1
+         IF (MAX(KPW(I), KPH(I)) .GT. IDMAX) IC = 2
+         IF (IC .EQ. IU) THEN
+            NITM = NITM + 1
+            IKND(NITM) = IU
+            IREF(NITM) = I
+         END IF
+   10 CONTINUE
+      CALL CMASSM
       RETURN
+C     END OF MTPADS
       END

@@ -1,4 +1,17 @@
-C     TZACRD - PLACEHOLDER UNTIL THE GEOMETRY CARDS ARE READ
+C=======================================================================
+C     TZACRD - THE O AND A CARDS: A CIRCLE OR AN ARC            (TENZOR)
+C     SOURCE:  REPORT, "SOSTAV KADRA" AND EXAMPLES 1-3 (CIRCLES AND
+C              ARCS BY K 11, K 13; RADIUS AT MOST 10 M); LAYOUT
+C              RECONSTRUCTED, SPEC 5.3. BOTH ARE DRAWN ON THE CONDUCTOR
+C              TAPE WITH TOOL W3.
+C     O:  2 DIRECTION + OR -; 11-20 X, 21-30 Y THE CENTRE; 31-40 R
+C     A:  2 DIRECTION + (CLOCKWISE) OR - ; 11-20 XC, 21-30 YC THE
+C         CENTRE; 31-40 XS, 41-50 YS THE START; 51-60 XE, 61-70 YE
+C         THE END, WHICH MUST LIE ON THE CIRCLE WITHIN 0.01 MM
+C     A CIRCLE IS KEPT AS A FRAME THAT STARTS RIGHT OF ITS CENTRE.
+C     CARD    (INPUT)  CHARACTER*80  THE O OR A CARD
+C     CHANGES: 2026-11-22 FIRST RECONSTRUCTION
+C=======================================================================
       SUBROUTINE TZACRD(CARD)
       IMPLICIT NONE
       CHARACTER*80 CARD
@@ -13,7 +26,130 @@ C     ---- /TZJOB/ THE JOB: CARD COUNT, ENVELOPE, PACKAGE NAMES ------
       CHARACTER*40 JOBNAM
       CHARACTER*80 CURC
       COMMON /TZJOBC/ ENVC, PKNAMS, JOBNAM, CURC
-      CALL CMERR('TENZOR', NCARD, 1, CARD(1:1) // ' CARDS ARE NOT '
-     1   // 'READ YET')
+C     ---- /TZPKG/ THE PACKAGE: P CARD PARAMETERS, ITS CARD IMAGES ---
+      INTEGER MXCRD
+      PARAMETER (MXCRD = 200000)
+      INTEGER LPKG, ICFST, NPCRD, NPERR, LECHO, IPCRD, LGEOM,
+     1        IX0, IY0, IWT(3), IDMAX, ISCN, ISCD, ICODE, IORD
+      COMMON /TZPKG/ LPKG, ICFST, NPCRD, NPERR, LECHO, IPCRD, LGEOM,
+     1               IX0, IY0, IWT, IDMAX, ISCN, ISCD, ICODE, IORD
+      CHARACTER*18 PKNAME
+      CHARACTER*24 PKFILE
+      CHARACTER*80 CIMG(MXCRD)
+      COMMON /TZPKGC/ PKNAME, PKFILE, CIMG
+C     ---- /TZGEO/ THE BOARD: PADS, CONDUCTORS, CIRCLES AND ARCS -------
+      INTEGER MXPAD, MXCON, MXVTX, MXARC
+      PARAMETER (MXPAD = 200000, MXCON = 50000, MXVTX = 200000,
+     1           MXARC = 50000)
+      INTEGER NPAD, KPX(MXPAD), KPY(MXPAD), KPW(MXPAD), KPH(MXPAD),
+     1        KPN(MXPAD), KPSX(MXPAD), KPSY(MXPAD), KPCRD(MXPAD),
+     2        NCON, KCV1(MXCON), KCV2(MXCON), KCW(MXCON), KCCRD(MXCON),
+     3        NVTX, KVX(MXVTX), KVY(MXVTX), KVCRD(MXVTX),
+     4        NARC, KAX(MXARC), KAY(MXARC), KADX(MXARC), KADY(MXARC),
+     5        KAXS(MXARC), KAYS(MXARC), KAK(MXARC), KACRD(MXARC),
+     6        LCOPEN, LGFULL
+      COMMON /TZGEO/ NPAD, KPX, KPY, KPW, KPH, KPN, KPSX, KPSY, KPCRD,
+     1               NCON, KCV1, KCV2, KCW, KCCRD, NVTX, KVX, KVY,
+     2               KVCRD, NARC, KAX, KAY, KADX, KADY, KAXS, KAYS,
+     3               KAK, KACRD, LCOPEN, LGFULL
+C     ---- LOCAL -------------------------------------------------------
+      INTEGER MXRAD
+      PARAMETER (MXRAD = 1000000)
+      INTEGER IXC, IYC, IR, IXS, IYS, IXE, IYE, K, IOK, LB
+      DOUBLE PRECISION RS, RE
+      CHARACTER*12 S1, S2
+      INTEGER L1, L2
+C
+      LGEOM = 1
+      IOK = 1
+      K = 0
+      IF (CARD(2:2) .EQ. '+') K = 13
+      IF (CARD(2:2) .EQ. '-') K = 11
+      IF (K .EQ. 0) THEN
+         CALL CMERR('TENZOR', NCARD, 2, 'DIRECTION ''' // CARD(2:2) //
+     1      '''; EXPECTED + (CLOCKWISE, K 13) OR - (COUNTER-CLOCKWISE, '
+     2      // 'K 11)')
+         IOK = 0
+      END IF
+      CALL CMFLD('TENZOR', NCARD, CARD, 11, 20, 2, 0, 'X', IXC, LB, IOK)
+      CALL CMFLD('TENZOR', NCARD, CARD, 21, 30, 2, 0, 'Y', IYC, LB, IOK)
+      IF (CARD(1:1) .EQ. 'O') THEN
+         CALL CMFLD('TENZOR', NCARD, CARD, 31, 40, 2, 0, 'R', IR, LB,
+     1              IOK)
+         IF (IOK .EQ. 0) RETURN
+         IF (IR .LE. 0) THEN
+            CALL CMERR('TENZOR', NCARD, 31, 'RADIUS R IN COLS 31-40 '
+     1         // 'MUST BE GREATER THAN 0')
+            RETURN
+         END IF
+         IXS = IXC + MIN(IR, MXRAD + 1)
+         IYS = IYC
+         RS = IR
+      ELSE
+         CALL CMFLD('TENZOR', NCARD, CARD, 31, 40, 2, 0, 'XS', IXS, LB,
+     1              IOK)
+         CALL CMFLD('TENZOR', NCARD, CARD, 41, 50, 2, 0, 'YS', IYS, LB,
+     1              IOK)
+         CALL CMFLD('TENZOR', NCARD, CARD, 51, 60, 2, 0, 'XE', IXE, LB,
+     1              IOK)
+         CALL CMFLD('TENZOR', NCARD, CARD, 61, 70, 2, 0, 'YE', IYE, LB,
+     1              IOK)
+         IF (IOK .EQ. 0) RETURN
+         CALL TZCOOR(IXS, 31, 'XS', IOK)
+         CALL TZCOOR(IYS, 41, 'YS', IOK)
+         CALL TZCOOR(IXE, 51, 'XE', IOK)
+         CALL TZCOOR(IYE, 61, 'YE', IOK)
+      END IF
+      CALL TZCOOR(IXC, 11, 'X', IOK)
+      CALL TZCOOR(IYC, 21, 'Y', IOK)
+      IF (IOK .EQ. 0) RETURN
+      IF (CARD(1:1) .EQ. 'A') THEN
+         IF (IXS .EQ. IXC .AND. IYS .EQ. IYC) THEN
+            CALL CMERR('TENZOR', NCARD, 31, 'THE START OF THE ARC IS '
+     1         // 'ITS CENTRE; THE START MUST LIE ON THE CIRCLE')
+            RETURN
+         END IF
+         IF (IXS .EQ. IXE .AND. IYS .EQ. IYE) THEN
+            CALL CMERR('TENZOR', NCARD, 51, 'THE ARC ENDS WHERE IT '
+     1         // 'STARTS; FOR A FULL CIRCLE USE AN O CARD')
+            RETURN
+         END IF
+         RS = SQRT(DBLE(IXS - IXC)**2 + DBLE(IYS - IYC)**2)
+         RE = SQRT(DBLE(IXE - IXC)**2 + DBLE(IYE - IYC)**2)
+         IF (ABS(RE - RS) .GT. 1.0D0) THEN
+            CALL CMFMM(NINT(MIN(RS, 2.0D9)), S1, L1)
+            CALL CMFMM(NINT(MIN(RE, 2.0D9)), S2, L2)
+            CALL CMERR('TENZOR', NCARD, 51, 'ARC END IS OFF ITS CIRCLE:'
+     1         // ' START RADIUS ' // S1(1:L1) // ' MM, END RADIUS ' //
+     2         S2(1:L2) // ' MM; THEY MUST AGREE WITHIN 0.01 MM')
+            RETURN
+         END IF
+      END IF
+      IF (RS .GT. MXRAD) THEN
+         CALL CMERR('TENZOR', NCARD, 31, 'RADIUS OVER 10 M, THE '
+     1      // 'LARGEST ARC OF THE MACHINE')
+         RETURN
+      END IF
+C     ---- KEEP IT AS ITS FRAME: X, Y FROM THE CENTRE, DX, DY ----------
+      IF (NARC .GE. MXARC) THEN
+         CALL TZFULL(8, 'MORE THAN 50000 CIRCLES AND ARCS IN ONE '
+     1      // 'PACKAGE (PARAMETER MXARC)')
+         RETURN
+      END IF
+      NARC = NARC + 1
+      KAXS(NARC) = IXS
+      KAYS(NARC) = IYS
+      KAX(NARC) = IXS - IXC
+      KAY(NARC) = IYS - IYC
+      IF (CARD(1:1) .EQ. 'O') THEN
+         KADX(NARC) = 0
+         KADY(NARC) = 0
+      ELSE
+         KADX(NARC) = IXE - IXS
+         KADY(NARC) = IYE - IYS
+      END IF
+      KAK(NARC) = K
+      KACRD(NARC) = NCARD
       RETURN
+C     END OF TZACRD
       END

@@ -69,7 +69,7 @@ C     ---- THE ARGUMENT: AFTER THE KEYWORD, A BLANK OR :, UPPER CASE ---
       IF (IA .LE. 72) ARG = WORK(IA:72)
       CALL CMTRIM(ARG, L)
       IF (IKEY .EQ. 1) THEN
-         JOBNAM = ARG
+         JOBNAM = ARG(1:40)
          RETURN
       END IF
 C     *MAIN: THE PROGRAM TO LOAD

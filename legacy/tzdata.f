@@ -27,6 +27,8 @@ C     ---- LOCAL -------------------------------------------------------
 C
       IF (CARD .EQ. ' ') RETURN
       CH = CARD(1:1)
+C     ANY CARD BUT + ENDS THE CONDUCTOR BEING READ
+      IF (CH .NE. '+') CALL TZLCLS
       IF (CH .EQ. 'P') THEN
          CALL TZPCRD(CARD)
       ELSE IF (CH .EQ. 'M') THEN

@@ -46,10 +46,12 @@ C     ---- LOCAL -------------------------------------------------------
       INTEGER IU, ICOD, L, L1
       CHARACTER*12 S1
 C
+      CALL TZLCLS
       IF (NPERR .EQ. 0) CALL TZMCHK
       ICOD = ICODE
       IF (ICODEO .NE. 0) ICOD = ICODEO
       IF (NPERR .EQ. 0 .AND. JOBERR .EQ. 0) THEN
+         CALL TZWIN
          DO 10 IU = 1, 3
             NFR = 0
             LFULL = 0
@@ -64,6 +66,7 @@ C
             IF (NPERR .EQ. 0) THEN
                CALL CMPUNC(IU, ICOD)
                CALL CMSTAT(IU)
+               CALL CMPLOT(IU)
             END IF
    10    CONTINUE
       END IF

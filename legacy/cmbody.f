@@ -1,0 +1,55 @@
+C=======================================================================
+C     CMBODY - APPEND THE FRAMES OF ONE ITEM, AS DRAWN FORWARD  (SHARED)
+C     SOURCE:  RECONSTRUCTED. AN ITEM IS WHAT THE TOUR VISITS AS ONE:
+C              A PAD OR A ROW OF PADS (M703T), A CONDUCTOR, A CIRCLE OR
+C              AN ARC (M703L). ITS BODY STARTS AT ITS ENTRY POINT; THE
+C              MOVE THERE IS NOT PART OF IT.
+C     I       (INPUT)  INTEGER  THE ITEM IN /CMITM/
+C     IEXP    (OUTPUT) INTEGER  THE ENTRY POINT, X, 0.01 MM
+C     IEYP    (OUTPUT) INTEGER  THE ENTRY POINT, Y
+C     CHANGES: 2026-11-22 FIRST RECONSTRUCTION
+C=======================================================================
+      SUBROUTINE CMBODY(I, IEXP, IEYP)
+      IMPLICIT NONE
+      INTEGER I, IEXP, IEYP
+C     ---- /TZGEO/ THE BOARD: PADS, CONDUCTORS, CIRCLES AND ARCS -------
+      INTEGER MXPAD, MXCON, MXVTX, MXARC
+      PARAMETER (MXPAD = 200000, MXCON = 50000, MXVTX = 200000,
+     1           MXARC = 50000)
+      INTEGER NPAD, KPX(MXPAD), KPY(MXPAD), KPW(MXPAD), KPH(MXPAD),
+     1        KPN(MXPAD), KPSX(MXPAD), KPSY(MXPAD), KPCRD(MXPAD),
+     2        NCON, KCV1(MXCON), KCV2(MXCON), KCW(MXCON), KCCRD(MXCON),
+     3        NVTX, KVX(MXVTX), KVY(MXVTX), KVCRD(MXVTX),
+     4        NARC, KAX(MXARC), KAY(MXARC), KADX(MXARC), KADY(MXARC),
+     5        KAXS(MXARC), KAYS(MXARC), KAK(MXARC), KACRD(MXARC),
+     6        LCOPEN, LGFULL
+      COMMON /TZGEO/ NPAD, KPX, KPY, KPW, KPH, KPN, KPSX, KPSY, KPCRD,
+     1               NCON, KCV1, KCV2, KCW, KCCRD, NVTX, KVX, KVY,
+     2               KVCRD, NARC, KAX, KAY, KADX, KADY, KAXS, KAYS,
+     3               KAK, KACRD, LCOPEN, LGFULL
+C     ---- /CMITM/ THE ITEMS OF A TAPE AND THE TOUR THROUGH THEM -------
+      INTEGER MXITM
+      PARAMETER (MXITM = 300000)
+      INTEGER NITM, IKND(MXITM), IREF(MXITM), IEX(MXITM), IEY(MXITM),
+     1        IXX(MXITM), IXY(MXITM), ITOUR(MXITM), IPOS(MXITM),
+     2        IORI(MXITM)
+      COMMON /CMITM/ NITM, IKND, IREF, IEX, IEY, IXX, IXY, ITOUR, IPOS,
+     1               IORI
+C     ---- LOCAL -------------------------------------------------------
+      INTEGER J
+C
+      J = IREF(I)
+      IF (IKND(I) .LE. 2) THEN
+         CALL MTBODY(J, IKND(I), IEXP, IEYP)
+      ELSE IF (IKND(I) .EQ. 3) THEN
+         CALL MLBODY(J, IEXP, IEYP)
+      ELSE
+C        A CIRCLE OR AN ARC IS ONE FRAME
+         IEXP = KAXS(J)
+         IEYP = KAYS(J)
+         CALL CMFADD(KAX(J), KAY(J), KADX(J), KADY(J), 0, KAK(J),
+     1               KACRD(J), 11)
+      END IF
+      RETURN
+C     END OF CMBODY
+      END

@@ -1,0 +1,40 @@
+C=======================================================================
+C     CMGLIV - LIST THE LIVE ENDS OF THE GRID IN KCEL(1..NLIVE) (SHARED)
+C     NLIVE   (OUTPUT) INTEGER  HOW MANY
+C     CHANGES: 2026-11-22 FIRST RECONSTRUCTION
+C=======================================================================
+      SUBROUTINE CMGLIV(NLIVE)
+      IMPLICIT NONE
+      INTEGER NLIVE
+C     ---- /CMITM/ THE ITEMS OF A TAPE AND THE TOUR THROUGH THEM -------
+      INTEGER MXITM
+      PARAMETER (MXITM = 300000)
+      INTEGER NITM, IKND(MXITM), IREF(MXITM), IEX(MXITM), IEY(MXITM),
+     1        IXX(MXITM), IXY(MXITM), ITOUR(MXITM), IPOS(MXITM),
+     2        IORI(MXITM)
+      COMMON /CMITM/ NITM, IKND, IREF, IEX, IEY, IXX, IXY, ITOUR, IPOS,
+     1               IORI
+C     ---- /CMTWK/ WORK SPACE OF THE TOUR: GRID, NEIGHBOURS, QUEUE -----
+      INTEGER MXPT, MXCEL, MXNB
+      PARAMETER (MXPT = 2 * MXITM, MXCEL = 2 * MXITM, MXNB = 8)
+      INTEGER NGX, NGY, KGX0, KGY0, KGCS, KDSX, KDSY, KDTX, KDTY,
+     1        KQX(MXPT), KQY(MXPT), KCST(MXCEL + 1), KCCN(MXCEL),
+     2        KCEL(MXPT), KSLT(MXPT), KNB(MXNB, MXPT), KQUE(MXITM),
+     3        LQUE(MXITM)
+      COMMON /CMTWK/ NGX, NGY, KGX0, KGY0, KGCS, KDSX, KDSY, KDTX, KDTY,
+     1               KQX, KQY, KCST, KCCN, KCEL, KSLT, KNB, KQUE, LQUE
+C     ---- LOCAL -------------------------------------------------------
+      INTEGER IC, IS
+C
+C     THE LIVE ENDS OF EACH CELL STAND FIRST IN IT, AND THE CELLS IN
+C     ORDER, SO MOVING THEM DOWN NEVER OVERWRITES ONE NOT YET READ
+      NLIVE = 0
+      DO 20 IC = 1, NGX * NGY
+         DO 10 IS = KCST(IC), KCST(IC) + KCCN(IC) - 1
+            NLIVE = NLIVE + 1
+            KCEL(NLIVE) = KCEL(IS)
+   10    CONTINUE
+   20 CONTINUE
+      RETURN
+C     END OF CMGLIV
+      END

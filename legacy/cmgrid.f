@@ -1,0 +1,85 @@
+C=======================================================================
+C     CMGRID - BUCKET THE ENDS LISTED IN KCEL(1..NP) ON A GRID  (SHARED)
+C     SOURCE:  RECONSTRUCTED. SQUARE CELLS OF ABOUT ONE END EACH OVER
+C              THE BOX OF THE ENDS; KCEL IS REWRITTEN CELL BY CELL,
+C              KCST(C) IS WHERE CELL C STARTS, KCCN(C) HOW MANY OF ITS
+C              ENDS ARE STILL LIVE, KSLT(P) WHERE END P STANDS.
+C     NP      (INPUT)  INTEGER  NUMBER OF ENDS LISTED
+C     CHANGES: 2026-11-22 FIRST RECONSTRUCTION
+C=======================================================================
+      SUBROUTINE CMGRID(NP)
+      IMPLICIT NONE
+      INTEGER NP
+C     ---- /CMITM/ THE ITEMS OF A TAPE AND THE TOUR THROUGH THEM -------
+      INTEGER MXITM
+      PARAMETER (MXITM = 300000)
+      INTEGER NITM, IKND(MXITM), IREF(MXITM), IEX(MXITM), IEY(MXITM),
+     1        IXX(MXITM), IXY(MXITM), ITOUR(MXITM), IPOS(MXITM),
+     2        IORI(MXITM)
+      COMMON /CMITM/ NITM, IKND, IREF, IEX, IEY, IXX, IXY, ITOUR, IPOS,
+     1               IORI
+C     ---- /CMTWK/ WORK SPACE OF THE TOUR: GRID, NEIGHBOURS, QUEUE -----
+      INTEGER MXPT, MXCEL, MXNB
+      PARAMETER (MXPT = 2 * MXITM, MXCEL = 2 * MXITM, MXNB = 8)
+      INTEGER NGX, NGY, KGX0, KGY0, KGCS, KDSX, KDSY, KDTX, KDTY,
+     1        KQX(MXPT), KQY(MXPT), KCST(MXCEL + 1), KCCN(MXCEL),
+     2        KCEL(MXPT), KSLT(MXPT), KNB(MXNB, MXPT), KQUE(MXITM),
+     3        LQUE(MXITM)
+      COMMON /CMTWK/ NGX, NGY, KGX0, KGY0, KGCS, KDSX, KDSY, KDTX, KDTY,
+     1               KQX, KQY, KCST, KCCN, KCEL, KSLT, KNB, KQUE, LQUE
+C     ---- LOCAL -------------------------------------------------------
+      INTEGER I, IP, IC, IX1, IX2, IY1, IY2, NC
+      DOUBLE PRECISION W, H, CS
+C
+      IX1 = KQX(KCEL(1))
+      IX2 = IX1
+      IY1 = KQY(KCEL(1))
+      IY2 = IY1
+      DO 10 I = 1, NP
+         IP = KCEL(I)
+         IX1 = MIN(IX1, KQX(IP))
+         IX2 = MAX(IX2, KQX(IP))
+         IY1 = MIN(IY1, KQY(IP))
+         IY2 = MAX(IY2, KQY(IP))
+   10 CONTINUE
+      KGX0 = IX1
+      KGY0 = IY1
+      W = MAX(IX2 - IX1, 1)
+      H = MAX(IY2 - IY1, 1)
+      CS = MAX(1.0D0, SQRT(W * H / MAX(NP, 1)))
+      CS = MAX(CS, MAX(W, H) / 2000.0D0)
+   20 CONTINUE
+      KGCS = INT(CS)
+      NGX = (IX2 - IX1) / KGCS + 1
+      NGY = (IY2 - IY1) / KGCS + 1
+      IF (DBLE(NGX) * NGY .GT. MXCEL) THEN
+         CS = CS * 1.5D0
+         GOTO 20
+      END IF
+      NC = NGX * NGY
+C     ---- COUNT, PLACE ------------------------------------------------
+      DO 30 IC = 1, NC
+         KCCN(IC) = 0
+   30 CONTINUE
+      DO 40 I = 1, NP
+         IP = KCEL(I)
+         CALL CMCELL(KQX(IP), KQY(IP), IC)
+         KSLT(IP) = IC
+         KCCN(IC) = KCCN(IC) + 1
+         KNB(1, I) = IP
+   40 CONTINUE
+      KCST(1) = 1
+      DO 50 IC = 1, NC
+         KCST(IC + 1) = KCST(IC) + KCCN(IC)
+         KCCN(IC) = 0
+   50 CONTINUE
+      DO 60 I = 1, NP
+         IP = KNB(1, I)
+         IC = KSLT(IP)
+         KCEL(KCST(IC) + KCCN(IC)) = IP
+         KSLT(IP) = KCST(IC) + KCCN(IC)
+         KCCN(IC) = KCCN(IC) + 1
+   60 CONTINUE
+      RETURN
+C     END OF CMGRID
+      END

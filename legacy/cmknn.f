@@ -1,0 +1,72 @@
+C=======================================================================
+C     CMKNN  - THE NEAREST ENDS OF EVERY END, FOR 2-OPT        (SHARED)
+C     SOURCE:  RECONSTRUCTED. FOR EACH END, THE MXNB NEAREST ENDS OF
+C              OTHER ITEMS, NEAREST FIRST, IN KNB (0 WHERE THERE ARE
+C              FEWER). THE GRID HOLDS ALL ENDS.
+C     NP      (INPUT)  INTEGER  NUMBER OF ENDS
+C     CHANGES: 2026-11-22 FIRST RECONSTRUCTION
+C=======================================================================
+      SUBROUTINE CMKNN(NP)
+      IMPLICIT NONE
+      INTEGER NP
+C     ---- /CMITM/ THE ITEMS OF A TAPE AND THE TOUR THROUGH THEM -------
+      INTEGER MXITM
+      PARAMETER (MXITM = 300000)
+      INTEGER NITM, IKND(MXITM), IREF(MXITM), IEX(MXITM), IEY(MXITM),
+     1        IXX(MXITM), IXY(MXITM), ITOUR(MXITM), IPOS(MXITM),
+     2        IORI(MXITM)
+      COMMON /CMITM/ NITM, IKND, IREF, IEX, IEY, IXX, IXY, ITOUR, IPOS,
+     1               IORI
+C     ---- /CMTWK/ WORK SPACE OF THE TOUR: GRID, NEIGHBOURS, QUEUE -----
+      INTEGER MXPT, MXCEL, MXNB
+      PARAMETER (MXPT = 2 * MXITM, MXCEL = 2 * MXITM, MXNB = 8)
+      INTEGER NGX, NGY, KGX0, KGY0, KGCS, KDSX, KDSY, KDTX, KDTY,
+     1        KQX(MXPT), KQY(MXPT), KCST(MXCEL + 1), KCCN(MXCEL),
+     2        KCEL(MXPT), KSLT(MXPT), KNB(MXNB, MXPT), KQUE(MXITM),
+     3        LQUE(MXITM)
+      COMMON /CMTWK/ NGX, NGY, KGX0, KGY0, KGCS, KDSX, KDSY, KDTX, KDTY,
+     1               KQX, KQY, KCST, KCCN, KCEL, KSLT, KNB, KQUE, LQUE
+C     ---- LOCAL -------------------------------------------------------
+      INTEGER IP, IC, ICX, ICY, K, IGX, IGY, IS, IQ, ISTEP, KMAX, N, J,
+     1        NBI(MXNB)
+      DOUBLE PRECISION D, RK, NBD(MXNB)
+C
+      KMAX = MAX(NGX, NGY)
+      DO 60 IP = 1, NP
+         N = 0
+         CALL CMCELL(KQX(IP), KQY(IP), IC)
+         ICX = MOD(IC - 1, NGX)
+         ICY = (IC - 1) / NGX
+         DO 40 K = 0, KMAX
+            DO 30 IGY = ICY - K, ICY + K
+               IF (IGY .LT. 0 .OR. IGY .GE. NGY) GOTO 30
+               ISTEP = 2 * K
+               IF (IGY .EQ. ICY - K .OR. IGY .EQ. ICY + K) ISTEP = 1
+               IF (ISTEP .EQ. 0) ISTEP = 1
+               DO 20 IGX = ICX - K, ICX + K, ISTEP
+                  IF (IGX .LT. 0 .OR. IGX .GE. NGX) GOTO 20
+                  IC = IGX + IGY * NGX + 1
+                  DO 10 IS = KCST(IC), KCST(IC) + KCCN(IC) - 1
+                     IQ = KCEL(IS)
+C                    NOT ITSELF, NOT THE OTHER END OF ITS OWN ITEM
+                     IF ((IQ + 1) / 2 .EQ. (IP + 1) / 2) GOTO 10
+                     D = (DBLE(KQX(IQ)) - KQX(IP))**2 +
+     1                   (DBLE(KQY(IQ)) - KQY(IP))**2
+                     CALL CMKINS(NBI, NBD, N, MXNB, IQ, D)
+   10             CONTINUE
+   20          CONTINUE
+   30       CONTINUE
+            RK = DBLE(K) * KGCS
+            IF (N .EQ. MXNB) THEN
+               IF (NBD(N) .LE. RK * RK) GOTO 45
+            END IF
+   40    CONTINUE
+   45    CONTINUE
+         DO 50 J = 1, MXNB
+            KNB(J, IP) = 0
+            IF (J .LE. N) KNB(J, IP) = NBI(J)
+   50    CONTINUE
+   60 CONTINUE
+      RETURN
+C     END OF CMKNN
+      END

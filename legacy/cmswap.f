@@ -1,0 +1,16 @@
+C=======================================================================
+C     CMSWAP - EXCHANGE TWO INTEGERS                            (SHARED)
+C     CHANGES: 2026-11-22 FIRST RECONSTRUCTION
+C=======================================================================
+      SUBROUTINE CMSWAP(IA, IB)
+      IMPLICIT NONE
+      INTEGER IA, IB
+C     ---- LOCAL -------------------------------------------------------
+      INTEGER IT
+C
+      IT = IA
+      IA = IB
+      IB = IT
+      RETURN
+C     END OF CMSWAP
+      END

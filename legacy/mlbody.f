@@ -1,0 +1,113 @@
+C=======================================================================
+C     MLBODY - THE FRAMES THAT DRAW ONE CONDUCTOR               (M703L)
+C     SOURCE:  RECONSTRUCTED, SPEC 6, AND THE CUTTER-CENTRE EQUIDISTANT
+C              OF THE URAL-1 PAPER (SEED 002). DOCS/FILLING.MD DRAWS IT.
+C     A CONDUCTOR AS WIDE AS ITS TOOL IS ONE PASS ON ITS CENTRE LINE.
+C     A WIDER ONE, WIDTH W, TOOL T, IS THE STROKE OF ALL POINTS WITHIN
+C     W/2 OF THE CENTRE LINE (ROUND ENDS, ROUND CORNERS). IT IS DRAWN
+C     AS CLOSED LOOPS AT DISTANCE R1 = (W-T)/2, R1-S, ... (DOWN TO AT
+C     MOST T/2) FROM THE CENTRE LINE, JOINED BY SHORT MOVES WITH THE
+C     TOOL DOWN. A LOOP: THE EQUIDISTANT ON THE LEFT OF THE CENTRE LINE
+C     GOING OUT, A HALF CIRCLE ROUND THE END, THE EQUIDISTANT ON THE
+C     OTHER SIDE COMING BACK, A HALF CIRCLE ROUND THE START. AT A CORNER
+C     THE OUTER EQUIDISTANT TURNS ON AN ARC ABOUT THE VERTEX; THE INNER
+C     ONE RUNS ON TO ITS END AND JOINS THE NEXT BY A STRAIGHT MOVE, ALL
+C     INSIDE THE STROKE. A LOOP AT DISTANCE R COVERS ALL POINTS WHOSE
+C     DISTANCE FROM THE CENTRE LINE IS WITHIN T/2 OF R, SO THE LOOPS
+C     COVER THE STROKE EXACTLY; S .LE. T - OVL AS FOR PADS.
+C     IC      (INPUT)  INTEGER  THE CONDUCTOR IN /TZGEO/
+C     IEXP    (OUTPUT) INTEGER  THE ENTRY POINT, X, 0.01 MM
+C     IEYP    (OUTPUT) INTEGER  THE ENTRY POINT, Y
+C     CHANGES: 2026-11-22 FIRST RECONSTRUCTION
+C=======================================================================
+      SUBROUTINE MLBODY(IC, IEXP, IEYP)
+      IMPLICIT NONE
+      INTEGER IC, IEXP, IEYP
+C     ---- /TZPKG/ THE PACKAGE: P CARD PARAMETERS, ITS CARD IMAGES ---
+      INTEGER MXCRD
+      PARAMETER (MXCRD = 200000)
+      INTEGER LPKG, ICFST, NPCRD, NPERR, LECHO, IPCRD, LGEOM,
+     1        IX0, IY0, IWT(3), IDMAX, ISCN, ISCD, ICODE, IORD
+      COMMON /TZPKG/ LPKG, ICFST, NPCRD, NPERR, LECHO, IPCRD, LGEOM,
+     1               IX0, IY0, IWT, IDMAX, ISCN, ISCD, ICODE, IORD
+      CHARACTER*18 PKNAME
+      CHARACTER*24 PKFILE
+      CHARACTER*80 CIMG(MXCRD)
+      COMMON /TZPKGC/ PKNAME, PKFILE, CIMG
+C     ---- /TZGEO/ THE BOARD: PADS, CONDUCTORS, CIRCLES AND ARCS -------
+      INTEGER MXPAD, MXCON, MXVTX, MXARC
+      PARAMETER (MXPAD = 200000, MXCON = 50000, MXVTX = 200000,
+     1           MXARC = 50000)
+      INTEGER NPAD, KPX(MXPAD), KPY(MXPAD), KPW(MXPAD), KPH(MXPAD),
+     1        KPN(MXPAD), KPSX(MXPAD), KPSY(MXPAD), KPCRD(MXPAD),
+     2        NCON, KCV1(MXCON), KCV2(MXCON), KCW(MXCON), KCCRD(MXCON),
+     3        NVTX, KVX(MXVTX), KVY(MXVTX), KVCRD(MXVTX),
+     4        NARC, KAX(MXARC), KAY(MXARC), KADX(MXARC), KADY(MXARC),
+     5        KAXS(MXARC), KAYS(MXARC), KAK(MXARC), KACRD(MXARC),
+     6        LCOPEN, LGFULL
+      COMMON /TZGEO/ NPAD, KPX, KPY, KPW, KPH, KPN, KPSX, KPSY, KPCRD,
+     1               NCON, KCV1, KCV2, KCW, KCCRD, NVTX, KVX, KVY,
+     2               KVCRD, NARC, KAX, KAY, KADX, KADY, KAXS, KAYS,
+     3               KAK, KACRD, LCOPEN, LGFULL
+C     ---- /MLWRK/ OFFSETS OF THE SEGMENTS OF A CONDUCTOR, ONE PASS ---
+      INTEGER MXSEG
+      PARAMETER (MXSEG = 200000)
+      INTEGER NSEG, JNX(MXSEG), JNY(MXSEG)
+      COMMON /MLWRK/ NSEG, JNX, JNY
+C     ---- LOCAL -------------------------------------------------------
+      INTEGER IT, IOVL, IV1, IV2, I, K, NP, ICRD, IPNX, IPNY
+      DOUBLE PRECISION R1, R, S, SMAX
+C
+      IT = IWT(3)
+      IOVL = MAX(1, MIN(10, IT / 4))
+      IV1 = KCV1(IC)
+      IV2 = KCV2(IC)
+      ICRD = KCCRD(IC)
+      IEXP = KVX(IV1)
+      IEYP = KVY(IV1)
+      R1 = (KCW(IC) - IT) / 2.0D0
+      IF (R1 .LT. 0.5D0) THEN
+C        ---- ONE PASS ON THE CENTRE LINE ------------------------------
+         DO 10 I = IV1, IV2 - 1
+            CALL CMFADD(0, 0, KVX(I+1) - KVX(I), KVY(I+1) - KVY(I), 0,
+     1                  10, KVCRD(I+1), 11)
+   10    CONTINUE
+         RETURN
+      END IF
+C     ---- LOOPS -------------------------------------------------------
+      SMAX = MAX(1, IT - IOVL)
+      NP = 1
+      IF (2.0D0 * R1 .GT. IT) NP = 1 + INT((2.0D0 * R1 - IT) /
+     1                                     (2.0D0 * SMAX) + 0.999999D0)
+      S = 0.0D0
+      IF (NP .GT. 1) S = (2.0D0 * R1 - IT) / (2.0D0 * (NP - 1))
+      IPNX = 0
+      IPNY = 0
+      DO 20 K = 1, NP
+         R = MAX(R1 - (K - 1) * S, 0.0D0)
+         IF (K .EQ. NP .AND. R .LT. 0.5D0) THEN
+C           THE LAST PASS ON THE CENTRE LINE ITSELF
+            IF (K .GT. 1) CALL CMFADD(0, 0, -IPNX, -IPNY, 0, 10, ICRD,
+     1                                31)
+            DO 15 I = IV1, IV2 - 1
+               CALL CMFADD(0, 0, KVX(I+1) - KVX(I), KVY(I+1) - KVY(I),
+     1                     0, 10, KVCRD(I+1), 11)
+   15       CONTINUE
+            GOTO 30
+         END IF
+         CALL MLNORM(IC, R)
+         IF (K .EQ. 1) THEN
+            IEXP = KVX(IV1) + JNX(1)
+            IEYP = KVY(IV1) + JNY(1)
+         ELSE
+            CALL CMFADD(0, 0, JNX(1) - IPNX, JNY(1) - IPNY, 0, 10,
+     1                  ICRD, 31)
+         END IF
+         CALL MLLOOP(IC)
+         IPNX = JNX(1)
+         IPNY = JNY(1)
+   20 CONTINUE
+   30 CONTINUE
+      RETURN
+C     END OF MLBODY
+      END

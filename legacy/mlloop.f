@@ -1,0 +1,63 @@
+C=======================================================================
+C     MLLOOP - ONE CLOSED LOOP ROUND A CONDUCTOR'S CENTRE LINE  (M703L)
+C     SOURCE:  RECONSTRUCTED (SEE MLBODY). STARTS AND ENDS AT THE FIRST
+C              VERTEX PLUS THE OFFSET OF THE FIRST SEGMENT (/MLWRK/).
+C     IC      (INPUT)  INTEGER  THE CONDUCTOR
+C     CHANGES: 2026-11-22 FIRST RECONSTRUCTION
+C=======================================================================
+      SUBROUTINE MLLOOP(IC)
+      IMPLICIT NONE
+      INTEGER IC
+C     ---- /TZGEO/ THE BOARD: PADS, CONDUCTORS, CIRCLES AND ARCS -------
+      INTEGER MXPAD, MXCON, MXVTX, MXARC
+      PARAMETER (MXPAD = 200000, MXCON = 50000, MXVTX = 200000,
+     1           MXARC = 50000)
+      INTEGER NPAD, KPX(MXPAD), KPY(MXPAD), KPW(MXPAD), KPH(MXPAD),
+     1        KPN(MXPAD), KPSX(MXPAD), KPSY(MXPAD), KPCRD(MXPAD),
+     2        NCON, KCV1(MXCON), KCV2(MXCON), KCW(MXCON), KCCRD(MXCON),
+     3        NVTX, KVX(MXVTX), KVY(MXVTX), KVCRD(MXVTX),
+     4        NARC, KAX(MXARC), KAY(MXARC), KADX(MXARC), KADY(MXARC),
+     5        KAXS(MXARC), KAYS(MXARC), KAK(MXARC), KACRD(MXARC),
+     6        LCOPEN, LGFULL
+      COMMON /TZGEO/ NPAD, KPX, KPY, KPW, KPH, KPN, KPSX, KPSY, KPCRD,
+     1               NCON, KCV1, KCV2, KCW, KCCRD, NVTX, KVX, KVY,
+     2               KVCRD, NARC, KAX, KAY, KADX, KADY, KAXS, KAYS,
+     3               KAK, KACRD, LCOPEN, LGFULL
+C     ---- /MLWRK/ OFFSETS OF THE SEGMENTS OF A CONDUCTOR, ONE PASS ---
+      INTEGER MXSEG
+      PARAMETER (MXSEG = 200000)
+      INTEGER NSEG, JNX(MXSEG), JNY(MXSEG)
+      COMMON /MLWRK/ NSEG, JNX, JNY
+C     ---- LOCAL -------------------------------------------------------
+      INTEGER IV1, IV2, I, ICRD
+C
+      IV1 = KCV1(IC)
+      IV2 = KCV2(IC)
+      ICRD = KCCRD(IC)
+C     OUT ON THE LEFT
+      DO 10 I = 1, NSEG
+         CALL CMFADD(0, 0, KVX(IV1+I) - KVX(IV1+I-1),
+     1               KVY(IV1+I) - KVY(IV1+I-1), 0, 10, KVCRD(IV1+I), 11)
+         IF (I .LT. NSEG) CALL MLJOIN(JNX(I), JNY(I), JNX(I+1),
+     1      JNY(I+1), KVX(IV1+I) - KVX(IV1+I-1),
+     2      KVY(IV1+I) - KVY(IV1+I-1), KVX(IV1+I+1) - KVX(IV1+I),
+     3      KVY(IV1+I+1) - KVY(IV1+I), KVCRD(IV1+I))
+   10 CONTINUE
+C     ROUND THE END, CLOCKWISE FROM THE LEFT SIDE TO THE RIGHT
+      CALL CMFADD(JNX(NSEG), JNY(NSEG), -2 * JNX(NSEG), -2 * JNY(NSEG),
+     1            0, 13, KVCRD(IV2), 11)
+C     BACK ON THE OTHER SIDE
+      DO 20 I = NSEG, 1, -1
+         CALL CMFADD(0, 0, KVX(IV1+I-1) - KVX(IV1+I),
+     1               KVY(IV1+I-1) - KVY(IV1+I), 0, 10, KVCRD(IV1+I), 11)
+         IF (I .GT. 1) CALL MLJOIN(-JNX(I), -JNY(I), -JNX(I-1),
+     1      -JNY(I-1), KVX(IV1+I-1) - KVX(IV1+I),
+     2      KVY(IV1+I-1) - KVY(IV1+I), KVX(IV1+I-2) - KVX(IV1+I-1),
+     3      KVY(IV1+I-2) - KVY(IV1+I-1), KVCRD(IV1+I-1))
+   20 CONTINUE
+C     ROUND THE START, BACK TO THE LEFT SIDE
+      CALL CMFADD(-JNX(1), -JNY(1), 2 * JNX(1), 2 * JNY(1), 0, 13,
+     1            ICRD, 11)
+      RETURN
+C     END OF MLLOOP
+      END

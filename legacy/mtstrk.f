@@ -1,0 +1,30 @@
+C=======================================================================
+C     MTSTRK - NOTE ONE STROKE OF A PAD'S FILL                   (M703T)
+C     SOURCE:  RECONSTRUCTED. A STROKE IS ONE FRAME DRAWN FROM A START
+C              POINT GIVEN RELATIVE TO THE PAD'S CENTRE.
+C     KSX..KFK (IN/OUT) INTEGER ARRAYS  THE STROKES SO FAR
+C     NS      (IN/OUT) INTEGER  THEIR NUMBER; PAST MXSTK ONLY COUNTED
+C     MXSTK   (INPUT)  INTEGER  THE SIZE OF THE ARRAYS
+C     ISX,ISY (INPUT)  INTEGER  THE START, FROM THE PAD'S CENTRE
+C     IX..K   (INPUT)  INTEGER  THE FRAME: X, Y, DX, DY, K
+C     CHANGES: 2026-11-22 FIRST RECONSTRUCTION
+C=======================================================================
+      SUBROUTINE MTSTRK(KSX, KSY, KFX, KFY, KFDX, KFDY, KFK, NS, MXSTK,
+     1                  ISX, ISY, IX, IY, IDX, IDY, K)
+      IMPLICIT NONE
+      INTEGER MXSTK, NS, ISX, ISY, IX, IY, IDX, IDY, K
+      INTEGER KSX(MXSTK), KSY(MXSTK), KFX(MXSTK), KFY(MXSTK),
+     1        KFDX(MXSTK), KFDY(MXSTK), KFK(MXSTK)
+C
+      NS = NS + 1
+      IF (NS .GT. MXSTK) RETURN
+      KSX(NS) = ISX
+      KSY(NS) = ISY
+      KFX(NS) = IX
+      KFY(NS) = IY
+      KFDX(NS) = IDX
+      KFDY(NS) = IDY
+      KFK(NS) = K
+      RETURN
+C     END OF MTSTRK
+      END

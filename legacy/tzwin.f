@@ -1,0 +1,102 @@
+C=======================================================================
+C     TZWIN  - THE WINDOW OF THE CONTROL PLOTS OF A PACKAGE     (TENZOR)
+C     SOURCE:  RECONSTRUCTED, SPEC 6. THE THREE LAYERS ARE PLOTTED AT
+C              ONE SCALE IN ONE WINDOW, SO THAT THEY CAN BE LAID ONE ON
+C              THE OTHER: THE START POINT, THE BOARD'S PADS, CONDUCTORS,
+C              CIRCLES AND ARCS WITH THEIR SIZES, AND WHERE THE M FRAMES
+C              OF EACH TAPE GO (RUN ON THE SIMULATED MACHINE ALONE).
+C     RESULT IN /CMSTA/: PWIN = XMIN, XMAX, YMIN, YMAX, 0.01 MM FROM THE
+C     START POINT. USES THE FRAME TABLE, WHICH IT LEAVES EMPTY.
+C     CHANGES: 2026-11-22 FIRST RECONSTRUCTION
+C=======================================================================
+      SUBROUTINE TZWIN
+      IMPLICIT NONE
+C     ---- /TZPKG/ THE PACKAGE: P CARD PARAMETERS, ITS CARD IMAGES ---
+      INTEGER MXCRD
+      PARAMETER (MXCRD = 200000)
+      INTEGER LPKG, ICFST, NPCRD, NPERR, LECHO, IPCRD, LGEOM,
+     1        IX0, IY0, IWT(3), IDMAX, ISCN, ISCD, ICODE, IORD
+      COMMON /TZPKG/ LPKG, ICFST, NPCRD, NPERR, LECHO, IPCRD, LGEOM,
+     1               IX0, IY0, IWT, IDMAX, ISCN, ISCD, ICODE, IORD
+      CHARACTER*18 PKNAME
+      CHARACTER*24 PKFILE
+      CHARACTER*80 CIMG(MXCRD)
+      COMMON /TZPKGC/ PKNAME, PKFILE, CIMG
+C     ---- /CMMAN/ MANUAL FRAMES OF M CARDS, IN DECK ORDER -------------
+      INTEGER MXMAN
+      PARAMETER (MXMAN = 20000)
+      INTEGER NMAN, MMTAP(MXMAN), MMX(MXMAN), MMY(MXMAN), MMDX(MXMAN),
+     1        MMDY(MXMAN), MMCYC(MXMAN), MMK(MXMAN), MMCRD(MXMAN)
+      COMMON /CMMAN/ NMAN, MMTAP, MMX, MMY, MMDX, MMDY, MMCYC, MMK,
+     1               MMCRD
+C     ---- /TZGEO/ THE BOARD: PADS, CONDUCTORS, CIRCLES AND ARCS -------
+      INTEGER MXPAD, MXCON, MXVTX, MXARC
+      PARAMETER (MXPAD = 200000, MXCON = 50000, MXVTX = 200000,
+     1           MXARC = 50000)
+      INTEGER NPAD, KPX(MXPAD), KPY(MXPAD), KPW(MXPAD), KPH(MXPAD),
+     1        KPN(MXPAD), KPSX(MXPAD), KPSY(MXPAD), KPCRD(MXPAD),
+     2        NCON, KCV1(MXCON), KCV2(MXCON), KCW(MXCON), KCCRD(MXCON),
+     3        NVTX, KVX(MXVTX), KVY(MXVTX), KVCRD(MXVTX),
+     4        NARC, KAX(MXARC), KAY(MXARC), KADX(MXARC), KADY(MXARC),
+     5        KAXS(MXARC), KAYS(MXARC), KAK(MXARC), KACRD(MXARC),
+     6        LCOPEN, LGFULL
+      COMMON /TZGEO/ NPAD, KPX, KPY, KPW, KPH, KPN, KPSX, KPSY, KPCRD,
+     1               NCON, KCV1, KCV2, KCW, KCCRD, NVTX, KVX, KVY,
+     2               KVCRD, NARC, KAX, KAY, KADX, KADY, KAXS, KAYS,
+     3               KAK, KACRD, LCOPEN, LGFULL
+C     ---- /CMFRT/ THE FRAMES OF THE TAPE BEING PUNCHED ----------------
+      INTEGER MXFRM
+      PARAMETER (MXFRM = 1000000)
+      INTEGER NFR, LFULL, JFX(MXFRM), JFY(MXFRM), JFDX(MXFRM),
+     1        JFDY(MXFRM), JFCYC(MXFRM), JFK(MXFRM), JFCRD(MXFRM),
+     2        JFCOL(MXFRM)
+      COMMON /CMFRT/ NFR, LFULL, JFX, JFY, JFDX, JFDY, JFCYC, JFK,
+     1               JFCRD, JFCOL
+C     ---- /CMSTA/ WHAT THE SIMULATED MACHINE DID WITH EACH TAPE -------
+      DOUBLE PRECISION DRAWN(3), TRAVL(3), RTIME(3), BBOX(4), PWIN(4)
+      INTEGER NFRT(3), NROWT(3), IENDX, IENDY, IENDT
+      COMMON /CMSTA/ DRAWN, TRAVL, RTIME, BBOX, PWIN, NFRT, NROWT,
+     1               IENDX, IENDY, IENDT
+C     ---- LOCAL -------------------------------------------------------
+      INTEGER I, IU, IH, K
+      DOUBLE PRECISION X1, Y1, X2, Y2, R
+C
+      DO 5 K = 1, 4
+         PWIN(K) = 0.0D0
+    5 CONTINUE
+C     ---- THE M FRAMES OF EACH TAPE -----------------------------------
+      DO 20 IU = 1, 3
+         NFR = 0
+         DO 10 I = 1, MIN(NMAN, MXMAN)
+            IF (MMTAP(I) .EQ. IU) CALL CMFADD(MMX(I), MMY(I), MMDX(I),
+     1         MMDY(I), MMCYC(I), MMK(I), MMCRD(I), 31)
+   10    CONTINUE
+         CALL CMSIM(IU, 0)
+         CALL TZWADD(BBOX(1), BBOX(3), 0.0D0)
+         CALL TZWADD(BBOX(2), BBOX(4), 0.0D0)
+   20 CONTINUE
+      NFR = 0
+C     ---- PADS AND ROWS -----------------------------------------------
+      DO 30 I = 1, NPAD
+         IH = MAX(KPW(I), KPH(I)) / 2
+         X1 = KPX(I)
+         Y1 = KPY(I)
+         X2 = X1 + DBLE(KPN(I) - 1) * KPSX(I)
+         Y2 = Y1 + DBLE(KPN(I) - 1) * KPSY(I)
+         CALL TZWADD(X1, Y1, DBLE(IH))
+         CALL TZWADD(X2, Y2, DBLE(IH))
+   30 CONTINUE
+C     ---- CONDUCTORS --------------------------------------------------
+      DO 50 I = 1, NCON
+         DO 40 K = KCV1(I), KCV2(I)
+            CALL TZWADD(DBLE(KVX(K)), DBLE(KVY(K)), KCW(I) / 2.0D0)
+   40    CONTINUE
+   50 CONTINUE
+C     ---- CIRCLES AND ARCS: THEIR WHOLE CIRCLE ------------------------
+      DO 60 I = 1, NARC
+         R = SQRT(DBLE(KAX(I))**2 + DBLE(KAY(I))**2) + IWT(3) / 2.0D0
+         CALL TZWADD(DBLE(KAXS(I) - KAX(I)), DBLE(KAYS(I) - KAY(I)), R)
+   60 CONTINUE
+      RETURN
+C     END OF TZWIN
+      END
