@@ -1,0 +1,100 @@
+"""Command line of the harness: ``python -m harness SUBCOMMAND ...``.
+
+Subcommands are listed in ``SUBCOMMANDS``: name -> function that adds the
+subparser to argparse and sets ``func`` (the runner, returning an exit
+status).  To add one, write ``_add_NAME(sub)`` and a runner, and add it to
+the dict.  Exit status: 0 done, 1 the input had errors, 2 usage or I/O.
+"""
+
+from __future__ import annotations
+
+import argparse
+import sys
+from collections.abc import Callable, Sequence
+from pathlib import Path
+
+from . import f77check, tape
+
+
+def _write(text: str, stream=None) -> None:
+    """Write UTF-8 whatever the locale says (the utf8 text has Cyrillic)."""
+    stream = stream or sys.stdout
+    stream.flush()
+    buffer = getattr(stream, "buffer", None)
+    if buffer is not None:
+        buffer.write(text.encode("utf-8"))
+        buffer.flush()
+    else:
+        stream.write(text)
+
+
+def _run_decode(args: argparse.Namespace) -> int:
+    path = Path(args.tape)
+    try:
+        data = path.read_bytes()
+    except OSError as exc:
+        print(f"{args.tape}: {exc.strerror or exc}", file=sys.stderr)
+        return 2
+    try:
+        decoded = tape.decode(data, args.code)
+    except tape.TapeError as exc:
+        print(f"{args.tape}: {exc}", file=sys.stderr)
+        return 1
+    _write(tape.tape_text(decoded, utf8=args.utf8))
+    return 0
+
+
+def _add_decode(sub: argparse._SubParsersAction) -> None:
+    p = sub.add_parser("decode", help="decode and check an EM-703 tape image",
+                       description="Print the frame text of a .ptp tape image, "
+                                   "or the first error with its row number.")
+    p.add_argument("tape", metavar="TAPE.ptp", help="tape image, one byte per row")
+    p.add_argument("--code", choices=("8", "K", "auto"), default="auto",
+                   help="code variant: 8 plain, K with control, auto (default)")
+    p.add_argument("--utf8", action="store_true",
+                   help="print the report's symbols (ΔX ΔY Ц К КК ГМ)")
+    p.set_defaults(func=_run_decode)
+
+
+def _run_f77check(args: argparse.Namespace) -> int:
+    return f77check.main(args.dir)
+
+
+def _add_f77check(sub: argparse._SubParsersAction) -> None:
+    p = sub.add_parser("f77check", help="check FORTRAN 77 sources (SPEC section 7)",
+                       description="Check every *.f file under DIR against the "
+                                   "rules of SPEC section 7.")
+    p.add_argument("dir", nargs="?", default="legacy", metavar="DIR",
+                   help="directory to check (default: legacy)")
+    p.set_defaults(func=_run_f77check)
+
+
+#: name -> function adding the subcommand's parser.
+SUBCOMMANDS: dict[str, Callable[[argparse._SubParsersAction], None]] = {
+    "decode": _add_decode,
+    "f77check": _add_f77check,
+}
+
+
+def build_parser() -> argparse.ArgumentParser:
+    """The argument parser with every subcommand of ``SUBCOMMANDS``."""
+    parser = argparse.ArgumentParser(prog="python -m harness",
+                                     description="EM-703 / TENZOR test harness")
+    sub = parser.add_subparsers(dest="command", metavar="COMMAND", required=True)
+    for add in SUBCOMMANDS.values():
+        add(sub)
+    return parser
+
+
+def main(argv: Sequence[str] | None = None) -> int:
+    """Run one subcommand; returns the exit status (2 on a usage error)."""
+    parser = build_parser()
+    try:
+        args = parser.parse_args(argv)
+    except SystemExit as exc:          # argparse: --help (0) or usage error (2)
+        return int(exc.code or 0)
+    return int(args.func(args))
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,67 @@
+"""Fixtures shared by every harness suite.
+
+The harness checks the project's programs from the outside: it runs the built
+executables as a user would and reads the files they write. It never links or
+imports project code (the oracle stays independent).
+"""
+from __future__ import annotations
+
+import os
+import shutil
+import subprocess
+from pathlib import Path
+
+import pytest
+from hypothesis import HealthCheck, settings
+
+ROOT = Path(__file__).resolve().parent.parent
+
+settings.register_profile(
+    "ci", derandomize=True, deadline=None, print_blob=True,
+    suppress_health_check=[HealthCheck.too_slow],
+)
+settings.register_profile("dev", deadline=None, suppress_health_check=[HealthCheck.too_slow])
+settings.load_profile(os.environ.get("HYPOTHESIS_PROFILE", "ci" if os.environ.get("CI") else "dev"))
+
+
+def _fpm_binary(name: str) -> Path:
+    """Build with fpm (a no-op when up to date) and return the path of executable `name`."""
+    fpm = shutil.which("fpm")
+    if fpm is None:
+        pytest.skip("fpm is not on PATH: run the tests with `make test`")
+    subprocess.run([fpm, "build"], cwd=ROOT, check=True, capture_output=True)
+    out = subprocess.run([fpm, "run", "--runner", "echo", name], cwd=ROOT, check=True,
+                         capture_output=True, text=True).stdout.split()
+    path = ROOT / out[-1]
+    assert path.exists(), f"fpm did not build {name}: {path}"
+    return path
+
+
+@pytest.fixture(scope="session")
+def tenzor_exe() -> Path:
+    """Path of the built `tenzor` executable."""
+    return _fpm_binary("tenzor")
+
+
+@pytest.fixture
+def run_tenzor(tenzor_exe: Path, tmp_path: Path):
+    """Run tenzor on a deck (text or path) into a fresh directory.
+
+    Returns a function deck -> (CompletedProcess, output directory).
+    """
+    counter = iter(range(10**6))
+
+    def run(deck: str | Path, *args: str, out: Path | None = None):
+        n = next(counter)
+        out = out or tmp_path / f"out{n}"
+        if isinstance(deck, Path):
+            cmd = [str(tenzor_exe), str(deck), "-o", str(out), *args]
+            proc = subprocess.run(cmd, capture_output=True, timeout=120)
+        else:
+            path = tmp_path / f"deck{n}.crd"
+            path.write_bytes(deck.encode("latin-1") if isinstance(deck, str) else deck)
+            cmd = [str(tenzor_exe), str(path), "-o", str(out), *args]
+            proc = subprocess.run(cmd, capture_output=True, timeout=120)
+        return proc, out
+
+    return run

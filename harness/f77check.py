@@ -1,0 +1,831 @@
+"""FORTRAN 77 style checker for ``legacy/`` (SPEC section 7, STYLE.md).
+
+Checks every ``*.f`` file under a directory (hidden and ``build``
+directories are skipped) against the rules in ``RULES``; each message names
+its rule.  Use ``check_dir(path)`` or ``python -m harness f77check [DIR]``.
+
+The reader follows fixed form (ANSI X3.9-1978, section 3): a line with C or *
+in column 1 is a comment; columns 1-5 hold a label, column 6 a continuation
+mark (anything but blank or zero), columns 7-72 the statement.  A statement
+is its initial line joined with its continuation lines; blanks outside
+character constants are insignificant, so keywords are matched on the
+statement with blanks removed ("END DO" and "ENDDO" alike).  Character
+constants are '...' with '' for a quote; Hollerith constants are not
+supported (the re-creation does not use them).  Symbolic names are collected
+from declarations (type, DIMENSION, COMMON, PARAMETER, EXTERNAL, INTRINSIC,
+SAVE), program unit headers, CALL and ENTRY, and from the expressions of
+assignments, IF conditions, DO controls and CALL arguments; the gfortran step
+(``F77-DECL``) makes sure every variable is declared.
+"""
+
+from __future__ import annotations
+
+import os
+import re
+import shutil
+import subprocess
+import sys
+import tempfile
+from collections.abc import Iterable
+from dataclasses import dataclass, field
+from pathlib import Path
+
+#: The rules: id -> what it requires.  Every message names one of these ids.
+RULES: dict[str, str] = {
+    "F77-BLANK": "no blank lines: a card deck has no blank cards (use a C comment)",
+    "F77-COL72": "nothing beyond column 72 (columns 73-80 are the sequence field)",
+    "F77-TAB": "no tab characters",
+    "F77-CHARSET": "only the FORTRAN 77 character set in statements; ASCII "
+                   "printable characters only anywhere",
+    "F77-LOWER": "no lower-case letters outside character constants and comments",
+    "F77-COMMENT": "comment lines have C or * in column 1",
+    "F77-LABEL": "columns 1-5 hold only a label (digits, not zero), and only "
+                 "on an initial line",
+    "F77-CONT": "continuation: a FORTRAN 77 character in column 6, after an "
+                "initial line, at most 19 continuation lines",
+    "F77-STMT": "an initial line has a statement in columns 7-72",
+    "F77-F90": "no Fortran 90 constructs (::, !, ;, \", ==, /=, <, >, _, %, &, "
+               "END DO, DO WHILE, labelless DO, MODULE, USE, CONTAINS, "
+               "ALLOCATE, INTENT, INTERFACE, SELECT CASE, INCLUDE, EXIT, "
+               "CYCLE, KIND=, END SUBROUTINE ...)",
+    "F77-EXT": "no vendor extensions (INTEGER*4, REAL*8, DOUBLE COMPLEX, "
+               "NAMELIST, ...); IMPLICIT NONE is the only extension",
+    "F77-NAME": "symbolic names have at most 6 characters",
+    "F77-IMPLICIT": "every program unit has IMPLICIT NONE and no other IMPLICIT",
+    "F77-UNIT": "one named program unit per file, ending in END, in a file "
+                "named after it in lower case (MTFILL in mtfill.f)",
+    "F77-COMMON": "a named COMMON block is declared identically (variables, "
+                  "types, dimensions) in every unit that uses it",
+    "F77-BLKCOM": "no blank COMMON",
+    "F77-PARAM": "a PARAMETER constant has the same type and value in every unit",
+    "F77-DECL": "every variable is declared (gfortran: 'has no IMPLICIT type')",
+    "F77-COMPILE": "the file compiles (other gfortran -fsyntax-only errors)",
+}
+
+MAX_NAME = 6
+MAX_CONTINUATIONS = 19
+STATEMENT_WIDTH = 66                       # columns 7-72
+#: The FORTRAN 77 character set (X3.9-1978, 3.1.1), upper case.
+F77_CHARS = frozenset("ABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789 =+-*/(),.$':")
+#: Characters outside it that mark Fortran 90 (or later) source.
+F90_CHARS: dict[str, str] = {
+    ";": "';' statement separator",
+    "<": "relational operator '<' (use .LT. or .LE.)",
+    ">": "relational operator '>' (use .GT. or .GE.)",
+    "_": "'_' in a name",
+    "%": "'%' component selector",
+    "&": "'&' continuation",
+}
+F90_PAIRS: dict[str, str] = {
+    "::": "'::' in a declaration",
+    "==": "relational operator '==' (use .EQ.)",
+    "/=": "relational operator '/=' (use .NE.)",
+}
+#: Statements (blanks removed) that are Fortran 90: pattern -> construct.
+F90_STATEMENTS: list[tuple[re.Pattern[str], str]] = [
+    (re.compile(r"DO(\d+,?)?WHILE\("), "DO WHILE"),
+    (re.compile(r"DO\d*$"), "DO without a loop control"),
+    (re.compile(r"MODULE"), "MODULE"),
+    (re.compile(r"USE"), "USE"),
+    (re.compile(r"CONTAINS$"), "CONTAINS"),
+    (re.compile(r"(DE)?ALLOCATE\("), "ALLOCATE"),
+    (re.compile(r"INTENT\("), "INTENT"),
+    (re.compile(r"(ABSTRACT)?INTERFACE"), "INTERFACE"),
+    (re.compile(r"SELECTCASE\("), "SELECT CASE"),
+    (re.compile(r"CASE(\(|DEFAULT$)"), "CASE"),
+    (re.compile(r"INCLUDE\x01"), "INCLUDE"),
+    (re.compile(r"EXIT([A-Z][A-Z0-9_]*)?$"), "EXIT"),
+    (re.compile(r"CYCLE([A-Z][A-Z0-9_]*)?$"), "CYCLE"),
+    (re.compile(r"WHERE\("), "WHERE"),
+    (re.compile(r"FORALL\("), "FORALL"),
+]
+#: Statements (blanks removed) that are vendor extensions.
+EXT_STATEMENTS: list[tuple[re.Pattern[str], str]] = [
+    (re.compile(r"DOUBLECOMPLEX"), "DOUBLE COMPLEX"),
+    (re.compile(r"NAMELIST/"), "NAMELIST"),
+    (re.compile(r"BYTE[A-Z]"), "BYTE"),
+    (re.compile(r"POINTER\("), "Cray POINTER"),
+    (re.compile(r"STRUCTURE/"), "STRUCTURE"),
+    (re.compile(r"RECORD/"), "RECORD"),
+    (re.compile(r"(AUTOMATIC|STATIC)[A-Z]"), "AUTOMATIC/STATIC"),
+]
+_END_F90 = re.compile(r"END(DO|SUBROUTINE|FUNCTION|PROGRAM|BLOCKDATA|MODULE|"
+                      r"INTERFACE|SELECT|TYPE|WHERE|FORALL)")
+_NAME = r"[A-Z][A-Z0-9_]*"
+_TYPE = re.compile(r"(INTEGER|REAL|DOUBLEPRECISION|COMPLEX|LOGICAL|CHARACTER)")
+_LEN = re.compile(r"\*(\d+|\([^()]*\))")
+_HEADERS: list[tuple[re.Pattern[str], str]] = [
+    (re.compile(rf"PROGRAM({_NAME})$"), "PROGRAM"),
+    (re.compile(rf"SUBROUTINE({_NAME})(\(.*\))?$"), "SUBROUTINE"),
+    (re.compile(rf"(?:INTEGER|REAL|DOUBLEPRECISION|COMPLEX|LOGICAL|"
+                rf"CHARACTER(?:\*(?:\d+|\(\*\)))?)?FUNCTION({_NAME})(\(.*\))$"),
+     "FUNCTION"),
+    (re.compile(rf"BLOCKDATA({_NAME})?$"), "BLOCK DATA"),
+]
+_DO = re.compile(rf"DO(\d*),?({_NAME})=")
+_DOTTED = re.compile(r"\.[A-Z]+\.")
+_EXPR_NAME = re.compile(r"(?<![A-Z0-9.])[A-Z][A-Z0-9_]*")
+_GFORTRAN_MSG = re.compile(r"^(?P<file>.*?):(?P<line>\d+):(?P<col>\d+): "
+                           r"(?P<kind>Fatal Error|Error|Warning): (?P<msg>.*)$")
+
+
+@dataclass(frozen=True, order=True)
+class Violation:
+    """One broken rule at a place in a file (line and column 1-based)."""
+
+    path: str
+    line: int
+    col: int
+    rule: str
+    message: str
+
+    def __str__(self) -> str:
+        return f"{self.path}:{self.line}:{self.col}: {self.rule}: {self.message}"
+
+
+# ---------------------------------------------------------------------------
+# Small text helpers on statements with blanks removed.
+# ---------------------------------------------------------------------------
+def _match_paren(s: str, i: int) -> int:
+    """Index of the ')' closing the '(' at s[i], or -1."""
+    depth = 0
+    for j in range(i, len(s)):
+        if s[j] == "(":
+            depth += 1
+        elif s[j] == ")":
+            depth -= 1
+            if depth == 0:
+                return j
+    return -1
+
+
+def _split_top(s: str, start: int, end: int) -> list[tuple[int, int]]:
+    """Ranges of s[start:end] between commas at parenthesis depth 0."""
+    out: list[tuple[int, int]] = []
+    depth, a = 0, start
+    for j in range(start, end):
+        if s[j] == "(":
+            depth += 1
+        elif s[j] == ")":
+            depth -= 1
+        elif s[j] == "," and depth == 0:
+            out.append((a, j))
+            a = j + 1
+    out.append((a, end))
+    return [(a, b) for a, b in out if b > a]
+
+
+def _top_index(s: str, ch: str, start: int = 0) -> int:
+    """Index of the first ``ch`` at parenthesis depth 0 from start, or -1."""
+    depth = 0
+    for j in range(start, len(s)):
+        if s[j] == "(":
+            depth += 1
+        elif s[j] == ")":
+            depth -= 1
+        elif s[j] == ch and depth == 0:
+            return j
+    return -1
+
+
+def _norm_len(text: str) -> str:
+    """CHARACTER length: '(80)' -> '80', '(*)' and '(MAXL)' stay."""
+    inner = text[1:-1] if text.startswith("(") and text.endswith(")") else text
+    return inner if inner.isdigit() else text
+
+
+# ---------------------------------------------------------------------------
+# Statements and program units.
+# ---------------------------------------------------------------------------
+@dataclass
+class _Statement:
+    """One statement: its characters (columns 7-72 of its lines) and, after
+    lexing, ``s``: upper case, blanks and string contents removed (each
+    character constant is one \\x01)."""
+
+    label: str
+    line: int
+    chars: list[str] = field(default_factory=list)
+    pos: list[tuple[int, int]] = field(default_factory=list)
+    last_line: int = 0
+    last_len: int = 0
+    continuations: int = 0
+    s: str = ""
+    smap: list[int] = field(default_factory=list)
+    strings: dict[int, str] = field(default_factory=dict)
+
+    def add(self, line: int, text: str) -> None:
+        if self.chars or self.last_line:            # pad the previous line to col 72
+            for j in range(self.last_len, STATEMENT_WIDTH):
+                self.chars.append(" ")
+                self.pos.append((self.last_line, 7 + j))
+        for j, ch in enumerate(text):
+            self.chars.append(ch)
+            self.pos.append((line, 7 + j))
+        self.last_line, self.last_len = line, len(text)
+
+    def at(self, si: int) -> tuple[int, int]:
+        """(line, column) of index ``si`` of ``s``."""
+        if not self.smap:
+            return self.line, 7
+        return self.pos[self.smap[min(max(si, 0), len(self.smap) - 1)]]
+
+    def text(self, a: int, b: int) -> str:
+        """s[a:b] with its character constants put back."""
+        return "".join(self.strings.get(j, self.s[j]) for j in range(a, b))
+
+
+@dataclass
+class _Unit:
+    kind: str
+    name: str | None
+    line: int
+    col: int
+    implicit_none: bool = False
+    types: dict[str, str] = field(default_factory=dict)
+    dims: dict[str, str] = field(default_factory=dict)
+    commons: dict[str, tuple[int, int, list[str]]] = field(default_factory=dict)
+    params: list[tuple[str, str, int, int]] = field(default_factory=list)
+
+
+@dataclass
+class _FileResult:
+    display: str
+    units: list[_Unit]
+    violations: list[Violation]
+
+
+class _FileChecker:
+    """Checks one file; collects its units for the checks across files."""
+
+    def __init__(self, path: Path, display: str) -> None:
+        self.path = path
+        self.display = display
+        self.violations: list[Violation] = []
+        self._seen: set[tuple[int, str, str]] = set()
+        self._names: set[str] = set()
+        self.units: list[_Unit] = []
+        self.unit: _Unit | None = None
+
+    def add(self, line: int, col: int, rule: str, message: str) -> None:
+        key = (line, rule, message)
+        if key not in self._seen:
+            self._seen.add(key)
+            self.violations.append(Violation(self.display, line, col, rule, message))
+
+    # -- lines ---------------------------------------------------------------
+    def run(self) -> _FileResult:
+        text = self.path.read_bytes().decode("latin-1")
+        lines = text.split("\n")
+        if lines and lines[-1] == "":
+            lines.pop()
+        statements: list[_Statement] = []
+        current: _Statement | None = None
+        for n, raw in enumerate(lines, 1):
+            if raw.strip(" ") == "":
+                self.add(n, 1, "F77-BLANK", "blank line (use a comment line with C "
+                                            "in column 1)")
+                continue
+            if len(raw) > 72:
+                self.add(n, 73, "F77-COL72", f"line has {len(raw)} characters; "
+                                             "columns 73-80 must be blank")
+            if "\t" in raw:
+                self.add(n, raw.index("\t") + 1, "F77-TAB", "tab character")
+            for j, ch in enumerate(raw):
+                if (ord(ch) < 32 and ch != "\t") or ord(ch) > 126:
+                    self.add(n, j + 1, "F77-CHARSET",
+                             f"character {ch!r} is not printable ASCII")
+                    break
+            c1 = raw[0]
+            if c1 in "C*":
+                continue
+            if c1 in "c!":
+                self.add(n, 1, "F77-COMMENT", f"comment line starts with {c1!r}; "
+                                              "use C or * in column 1")
+                continue
+            card = raw[:72]
+            labels, mark, body = card[:5], card[5:6] or " ", card[6:]
+            if mark not in " 0":                       # continuation line
+                if labels.strip(" \t"):
+                    col = next(j for j, ch in enumerate(labels) if ch not in " \t") + 1
+                    self.add(n, col, "F77-LABEL", "continuation line has text in "
+                                                  "columns 1-5")
+                if mark not in F77_CHARS:
+                    self.add(n, 6, "F77-CONT", f"continuation mark {mark!r} is not "
+                                               "a FORTRAN 77 character")
+                if current is None:               # dropped: nothing to join it to
+                    self.add(n, 6, "F77-CONT", "continuation line with no "
+                                               "statement to continue")
+                    continue
+                else:
+                    current.continuations += 1
+                    if current.continuations == MAX_CONTINUATIONS + 1:
+                        self.add(n, 6, "F77-CONT", "more than "
+                                 f"{MAX_CONTINUATIONS} continuation lines")
+                current.add(n, body)
+                continue
+            misplaced = False
+            for j, ch in enumerate(labels):
+                if ch not in " 0123456789\t":
+                    self.add(n, j + 1, "F77-LABEL",
+                             f"{ch!r} in column {j + 1}: columns 1-5 hold only a "
+                             "label; statements start in column 7")
+                    misplaced = True
+                    break
+            label = "".join(ch for ch in labels if ch.isdigit())
+            if label and int(label) == 0:
+                self.add(n, 1, "F77-LABEL", "label 0 is not allowed")
+            if not body.strip(" \t") and not misplaced:
+                self.add(n, 7, "F77-STMT", "initial line without a statement in "
+                                           "columns 7-72")
+            current = _Statement(label=label, line=n)
+            current.add(n, body)
+            statements.append(current)
+        for st in statements:
+            self._lex(st)
+            self._statement(st)
+        self._close_unit(at_eof=True)
+        self._file_checks()
+        return _FileResult(self.display, self.units, self.violations)
+
+    # -- lexing --------------------------------------------------------------
+    def _lex(self, st: _Statement) -> None:
+        chars, pos = st.chars, st.pos
+        out: list[str] = []
+        lower_lines: set[int] = set()
+        i, n = 0, len(chars)
+        while i < n:
+            ch = chars[i]
+            line, col = pos[i]
+            if ch == " ":
+                i += 1
+                continue
+            if ch in "'\"":
+                if ch == '"':
+                    self.add(line, col, "F77-F90", "double-quoted string "
+                                                   "(use '...')")
+                j = i + 1
+                while j < n:
+                    if chars[j] == ch:
+                        if j + 1 < n and chars[j + 1] == ch:
+                            j += 2
+                            continue
+                        break
+                    j += 1
+                st.strings[len(out)] = "".join(chars[i:j + 1])
+                out.append("\x01")
+                st.smap.append(i)
+                i = j + 1
+                continue
+            if ch == "!":
+                self.add(line, col, "F77-F90", "'!' comment")
+                while i < n and pos[i][0] == line:
+                    i += 1
+                continue
+            up = ch
+            if "a" <= ch <= "z":
+                if line not in lower_lines:
+                    lower_lines.add(line)
+                    self.add(line, col, "F77-LOWER", f"lower-case letter {ch!r} "
+                                                     "outside a character constant")
+                up = ch.upper()
+            elif ch in F90_CHARS:
+                self.add(line, col, "F77-F90", F90_CHARS[ch])
+            elif ch not in F77_CHARS:
+                if 32 <= ord(ch) < 127:
+                    self.add(line, col, "F77-CHARSET", f"character {ch!r} is not "
+                                                       "in the FORTRAN 77 character set")
+                i += 1                 # (non-printable: reported on its line)
+                continue
+            out.append(up)
+            st.smap.append(i)
+            i += 1
+        st.s = "".join(out)
+        for pair, message in F90_PAIRS.items():
+            k = st.s.find(pair)
+            while k >= 0:
+                self.add(*st.at(k), "F77-F90", message)
+                k = st.s.find(pair, k + len(pair))
+
+    # -- names ---------------------------------------------------------------
+    def _name(self, st: _Statement, si: int, name: str, what: str) -> None:
+        if len(name) > MAX_NAME and name not in self._names:
+            self._names.add(name)
+            self.add(*st.at(si), "F77-NAME", f"{what} {name} has {len(name)} "
+                                             f"characters (at most {MAX_NAME})")
+
+    def _expr_names(self, st: _Statement, a: int, b: int) -> None:
+        masked = _DOTTED.sub(lambda m: " " * len(m.group()), st.s[a:b])
+        for m in _EXPR_NAME.finditer(masked):
+            self._name(st, a + m.start(), m.group(), "name")
+
+    # -- units ---------------------------------------------------------------
+    def _open_unit(self, kind: str, name: str | None, st: _Statement) -> None:
+        if self.unit is not None:
+            self.add(st.line, 7, "F77-UNIT", f"{kind} starts before the END of "
+                                             f"{self.unit.kind} {self.unit.name}")
+            self._close_unit()
+        line, col = st.at(0)
+        self.unit = _Unit(kind=kind, name=name, line=line, col=col)
+        self.units.append(self.unit)
+
+    def _close_unit(self, at_eof: bool = False) -> None:
+        unit = self.unit
+        if unit is None:
+            return
+        if at_eof:
+            self.add(unit.line, unit.col, "F77-UNIT",
+                     f"{unit.kind} {unit.name or '(unnamed)'} has no END statement")
+        if not unit.implicit_none:
+            self.add(unit.line, unit.col, "F77-IMPLICIT",
+                     f"{unit.kind} {unit.name or '(unnamed)'} has no IMPLICIT NONE")
+        self.unit = None
+
+    def _file_checks(self) -> None:
+        if not self.units:
+            self.add(1, 1, "F77-UNIT", "no program unit in this file")
+            return
+        for unit in self.units[1:]:
+            self.add(unit.line, unit.col, "F77-UNIT",
+                     f"second program unit {unit.name or '(unnamed)'} in this "
+                     "file (one program unit per file)")
+        first = self.units[0]
+        if first.name is None:
+            self.add(first.line, first.col, "F77-UNIT",
+                     f"{first.kind} has no name, so the file cannot be named after it")
+            return
+        want = first.name.lower() + ".f"
+        if self.path.name != want:
+            self.add(first.line, first.col, "F77-UNIT",
+                     f"file is named {self.path.name}; {first.kind} {first.name} "
+                     f"belongs in {want}")
+
+    # -- statements ----------------------------------------------------------
+    def _statement(self, st: _Statement) -> None:
+        s = st.s
+        if not s:
+            return
+        for pattern, kind in _HEADERS:
+            m = pattern.match(s)
+            if m:
+                name = m.group(1)
+                self._open_unit(kind, name, st)
+                if name:
+                    self._name(st, m.start(1), name, kind)
+                if m.lastindex and m.lastindex >= 2 and m.group(2):
+                    a, b = m.start(2) + 1, m.end(2) - 1
+                    for x, y in _split_top(s, a, b):
+                        if re.fullmatch(_NAME, s[x:y]):
+                            self._name(st, x, s[x:y], "dummy argument")
+                return
+        if self.unit is None:
+            self._open_unit("main program", None, st)
+        self._body(st, 0)
+
+    def _body(self, st: _Statement, off: int) -> None:
+        s = st.s
+        t = s[off:]
+        unit = self.unit
+        assert unit is not None
+        m = re.match(r"(ELSE)?IF\(", t)
+        if m:
+            p = off + m.end() - 1
+            c = _match_paren(s, p)
+            if c > 0 and (c + 1 == len(s) or s[c + 1] != "="):
+                self._expr_names(st, p + 1, c)
+                rest = s[c + 1:]
+                if rest and rest != "THEN" and not rest[0].isdigit():
+                    self._body(st, c + 1)
+                return
+        eq = _top_index(s, "=", off)
+        if eq >= 0 and "::" not in t:
+            target = re.compile(_NAME).match(s, off)
+            declared = target is not None and target.group() in unit.types
+            if t.startswith("PARAMETER") and not t.startswith("PARAMETER(") \
+                    and not declared:
+                self.add(*st.at(off), "F77-EXT", "PARAMETER without parentheses")
+                return
+            if _TYPE.match(t) and not declared:
+                self.add(*st.at(off), "F77-F90", "initialisation in a type "
+                                                "statement (use PARAMETER or DATA)")
+                return
+            m = _DO.match(t)
+            if m and _top_index(s, ",", eq + 1) >= 0:
+                if not m.group(1):
+                    self.add(*st.at(off), "F77-F90", "DO without a statement label "
+                                                    "(DO ... END DO)")
+                self._expr_names(st, off + m.start(2), len(s))
+                return
+            self._expr_names(st, off, len(s))      # assignment or statement function
+            return
+        if t == "END":
+            self._close_unit()
+            return
+        m = _END_F90.match(t)
+        if m:
+            self.add(*st.at(off), "F77-F90", f"END {m.group(1)}")
+            if m.group(1) in ("SUBROUTINE", "FUNCTION", "PROGRAM", "BLOCKDATA"):
+                self._close_unit()
+            return
+        for pattern, construct in F90_STATEMENTS:
+            if pattern.match(t):
+                self.add(*st.at(off), "F77-F90", construct)
+                return
+        for pattern, construct in EXT_STATEMENTS:
+            if pattern.match(t):
+                self.add(*st.at(off), "F77-EXT", construct)
+                return
+        if t.startswith("IMPLICIT"):
+            if t == "IMPLICITNONE":
+                unit.implicit_none = True
+            else:
+                self.add(*st.at(off), "F77-IMPLICIT", "IMPLICIT other than "
+                                                     "IMPLICIT NONE")
+            return
+        m = _TYPE.match(t)
+        if m:
+            self._type_statement(st, off, m.group(1))
+            return
+        for keyword, handler in (("DIMENSION", self._dimension),
+                                 ("COMMON", self._common),
+                                 ("PARAMETER(", self._parameter),
+                                 ("EXTERNAL", self._name_list),
+                                 ("INTRINSIC", self._name_list),
+                                 ("SAVE", self._name_list),
+                                 ("CALL", self._call),
+                                 ("ENTRY", self._call)):
+            if t.startswith(keyword):
+                handler(st, off, off + len(keyword))
+                return
+
+    def _type_statement(self, st: _Statement, off: int, keyword: str) -> None:
+        s = st.s
+        unit = self.unit
+        assert unit is not None
+        type_name = "DOUBLE PRECISION" if keyword == "DOUBLEPRECISION" else keyword
+        i = off + len(keyword)
+        length = "1"
+        if s.startswith("*", i):
+            m = _LEN.match(s, i)
+            if m:
+                length = _norm_len(m.group(1))
+                i = m.end()
+                if keyword != "CHARACTER":
+                    self.add(*st.at(off), "F77-EXT",
+                             f"{type_name}*{length} is not FORTRAN 77")
+        elif s.startswith("(", i):
+            c = _match_paren(s, i)
+            selector = s[i:c + 1] if c > 0 else s[i:]
+            self.add(*st.at(i), "F77-F90", f"kind or length selector {selector}"
+                     + (" (KIND=)" if "KIND=" in selector else ""))
+            i = c + 1 if c > 0 else len(s)
+        if "::" in s[i:]:
+            attributes = s[i:s.index("::", i)]
+            if "INTENT(" in attributes:
+                self.add(*st.at(i), "F77-F90", "INTENT")
+            i = s.index("::", i) + 2
+        for a, b in _split_top(s, i, len(s)):
+            self._entity(st, a, b, type_name, length)
+
+    def _entity(self, st: _Statement, a: int, b: int, type_name: str | None,
+                length: str = "1") -> str | None:
+        """Declare one entity ``NAME[(dims)][*len]`` of s[a:b]; returns NAME."""
+        s = st.s
+        unit = self.unit
+        assert unit is not None
+        m = re.compile(_NAME).match(s, a, b)
+        if not m:
+            return None
+        name = m.group()
+        self._name(st, a, name, "name")
+        i = m.end()
+        if i < b and s[i] == "(":
+            c = _match_paren(s[:b], i)
+            if c > 0:
+                unit.dims[name] = s[i:c + 1]
+                i = c + 1
+        if type_name is not None:
+            if type_name == "CHARACTER":
+                lm = _LEN.match(s[:b], i)
+                if lm:
+                    length = _norm_len(lm.group(1))
+                unit.types[name] = f"CHARACTER*{length}"
+            else:
+                unit.types[name] = type_name
+        return name
+
+    def _dimension(self, st: _Statement, off: int, i: int) -> None:
+        for a, b in _split_top(st.s, i, len(st.s)):
+            self._entity(st, a, b, None)
+
+    def _common(self, st: _Statement, off: int, i: int) -> None:
+        s = st.s
+        unit = self.unit
+        assert unit is not None
+        block = ""
+        while i < len(s):
+            if s[i] == "/":
+                j = s.find("/", i + 1)
+                if j < 0:
+                    return
+                block = s[i + 1:j]
+                if block:
+                    self._name(st, i + 1, block, "COMMON block")
+                i = j + 1
+            end = len(s)
+            depth = 0
+            for j in range(i, len(s)):
+                depth += {"(": 1, ")": -1}.get(s[j], 0)
+                if s[j] == "/" and depth == 0:
+                    end = j
+                    break
+            if not block:
+                self.add(*st.at(i), "F77-BLKCOM", "blank COMMON (name every "
+                                                  "COMMON block)")
+            line, col = st.at(off)
+            entry = unit.commons.setdefault(block, (line, col, []))
+            for a, b in _split_top(s, i, end):
+                name = self._entity(st, a, b, None)
+                if name:
+                    entry[2].append(name)
+            i = end
+
+    def _parameter(self, st: _Statement, off: int, i: int) -> None:
+        s = st.s
+        unit = self.unit
+        assert unit is not None
+        c = _match_paren(s, i - 1)
+        end = c if c > 0 else len(s)
+        for a, b in _split_top(s, i, end):
+            eq = s.find("=", a, b)
+            if eq < 0:
+                continue
+            name = s[a:eq]
+            self._name(st, a, name, "PARAMETER")
+            self._expr_names(st, eq + 1, b)
+            line, col = st.at(a)
+            unit.params.append((name, st.text(eq + 1, b), line, col))
+
+    def _name_list(self, st: _Statement, off: int, i: int) -> None:
+        s = st.s
+        for a, b in _split_top(s, i, len(s)):
+            if re.fullmatch(_NAME, s[a:b]):
+                self._name(st, a, s[a:b], "name")
+
+    def _call(self, st: _Statement, off: int, i: int) -> None:
+        s = st.s
+        m = re.compile(_NAME).match(s, i)
+        if not m:
+            return
+        self._name(st, i, m.group(), "procedure")
+        if m.end() < len(s) and s[m.end()] == "(":
+            self._expr_names(st, m.end(), len(s))
+
+
+# ---------------------------------------------------------------------------
+# Checks across files.
+# ---------------------------------------------------------------------------
+def _signature(unit: _Unit, block: str) -> list[str]:
+    return [f"{v} {unit.types.get(v, 'untyped')}{unit.dims.get(v, '')}"
+            for v in unit.commons[block][2]]
+
+
+def _cross_checks(results: list[_FileResult]) -> list[Violation]:
+    out: list[Violation] = []
+    commons: dict[str, tuple[str, int, list[str]]] = {}
+    params: dict[str, tuple[str, int, str, str]] = {}
+    for res in results:
+        for unit in res.units:
+            for block, (line, col, _vars) in unit.commons.items():
+                if not block:
+                    continue
+                sig = _signature(unit, block)
+                if block not in commons:
+                    commons[block] = (res.display, line, sig)
+                    continue
+                where, ref_line, ref = commons[block]
+                if sig != ref:
+                    i = next((k for k, (p, q) in enumerate(zip(sig, ref)) if p != q),
+                             None)
+                    detail = (f"variable {i + 1} is {sig[i]} here, {ref[i]} there"
+                              if i is not None else
+                              f"{len(sig)} variables here, {len(ref)} there")
+                    out.append(Violation(res.display, line, col, "F77-COMMON",
+                                         f"COMMON /{block}/ differs from "
+                                         f"{where}:{ref_line}: {detail}"))
+            for name, value, line, col in unit.params:
+                type_name = unit.types.get(name, "untyped")
+                if name not in params:
+                    params[name] = (res.display, line, value, type_name)
+                    continue
+                where, ref_line, ref_value, ref_type = params[name]
+                if (value, type_name) != (ref_value, ref_type):
+                    out.append(Violation(res.display, line, col, "F77-PARAM",
+                                         f"PARAMETER {name} is {type_name} {value} "
+                                         f"here, {ref_type} {ref_value} in "
+                                         f"{where}:{ref_line}"))
+    return out
+
+
+# ---------------------------------------------------------------------------
+# gfortran: every variable declared.
+# ---------------------------------------------------------------------------
+GFORTRAN_FLAGS: tuple[str, ...] = (
+    "-fsyntax-only", "-ffixed-form", "-fimplicit-none", "-std=legacy", "-Wall",
+    "-fdiagnostics-color=never", "-fno-diagnostics-show-caret")
+
+
+def _gfortran(path: Path, display: str, exe: str) -> list[Violation]:
+    """Run gfortran -fsyntax-only on a copy in a temporary directory (so no
+    .mod or .o file is left anywhere); its errors become violations."""
+    out: list[Violation] = []
+    with tempfile.TemporaryDirectory(prefix="f77check-") as tmp:
+        copy = Path(tmp) / path.name
+        shutil.copyfile(path, copy)
+        env = dict(os.environ, LC_ALL="C", LANG="C", LANGUAGE="C")
+        proc = subprocess.run([exe, *GFORTRAN_FLAGS, copy.name], cwd=tmp, env=env,
+                              capture_output=True, text=True, errors="replace",
+                              timeout=300)
+    for text in proc.stderr.splitlines():
+        m = _GFORTRAN_MSG.match(text)
+        if m:
+            if m.group("kind") == "Warning":
+                continue
+            msg = m.group("msg")
+            rule = "F77-DECL" if "has no IMPLICIT type" in msg else "F77-COMPILE"
+            out.append(Violation(display, max(int(m.group("line")), 1),
+                                 max(int(m.group("col")), 1), rule, f"gfortran: {msg}"))
+        elif "Error:" in text:
+            out.append(Violation(display, 1, 1, "F77-COMPILE", f"gfortran: {text}"))
+    if proc.returncode != 0 and not out:
+        first = proc.stderr.strip().splitlines()[:1] or [f"exit status {proc.returncode}"]
+        out.append(Violation(display, 1, 1, "F77-COMPILE", f"gfortran: {first[0]}"))
+    return out
+
+
+# ---------------------------------------------------------------------------
+# Entry points.
+# ---------------------------------------------------------------------------
+def find_sources(root: str | os.PathLike[str]) -> list[Path]:
+    """Every ``*.f`` file under root, sorted, skipping hidden and build dirs."""
+    base = Path(root)
+    found = []
+    for p in base.rglob("*.f"):
+        parts = p.relative_to(base).parts[:-1]
+        if p.is_file() and not any(x.startswith(".") or x == "build" for x in parts):
+            found.append(p)
+    return sorted(found)
+
+
+def check_files(paths: Iterable[Path], compiler: str | None = "gfortran",
+                notes: list[str] | None = None) -> list[Violation]:
+    """Check the given files (names as given are used in messages)."""
+    paths = list(paths)
+    results = [_FileChecker(p, str(p)).run() for p in paths]
+    violations = [v for r in results for v in r.violations]
+    violations += _cross_checks(results)
+    if compiler:
+        exe = shutil.which(compiler)
+        if exe is None:
+            if notes is not None:
+                notes.append(f"{compiler} is not on PATH: the F77-DECL step "
+                             "(every variable declared) was skipped")
+        else:
+            for p in paths:
+                violations += _gfortran(p, str(p), exe)
+    return sorted(set(violations))
+
+
+def check_dir(path: str | os.PathLike[str] = "legacy",
+              compiler: str | None = "gfortran",
+              notes: list[str] | None = None) -> list[Violation]:
+    """Check every ``*.f`` under ``path``; returns the violations, sorted.
+
+    ``compiler`` runs the F77-DECL step (None skips it); if it is not on PATH
+    the step is skipped and a line saying so is appended to ``notes``.
+    """
+    return check_files(find_sources(path), compiler, notes)
+
+
+def main(directory: str = "legacy") -> int:
+    """CLI: print violations and a summary; 0 clean, 1 violations, 2 no input."""
+    root = Path(directory)
+    if not root.is_dir():
+        print(f"f77check: {directory}: not a directory", file=sys.stderr)
+        return 2
+    files = find_sources(root)
+    if not files:
+        print(f"f77check: no *.f files under {directory}", file=sys.stderr)
+        return 2
+    notes: list[str] = []
+    violations = check_files(files, notes=notes)
+    for v in violations:
+        print(v)
+    for note in notes:
+        print(f"f77check: {note}", file=sys.stderr)
+    if violations:
+        bad = len({v.path for v in violations})
+        print(f"f77check: {len(violations)} violations in {bad} of {len(files)} files")
+        return 1
+    print(f"f77check: {len(files)} files, no violations")
+    return 0

@@ -1,0 +1,454 @@
+"""Tests of harness.f77check on small synthetic files, one rule at a time.
+
+The real legacy/ tree is checked by another test; these files are written
+to tmp_path.
+"""
+
+from __future__ import annotations
+
+import re
+import shutil
+from pathlib import Path
+
+import pytest
+
+from harness.__main__ import main
+from harness.f77check import RULES, Violation, check_dir
+
+HAVE_GFORTRAN = shutil.which("gfortran") is not None
+needs_gfortran = pytest.mark.skipif(not HAVE_GFORTRAN, reason="gfortran not on PATH")
+
+def write(directory: Path, name: str, lines: list[str]) -> Path:
+    path = directory / name
+    path.write_text("".join(line + "\n" for line in lines), encoding="utf-8")
+    return path
+
+
+def subroutine(name: str, body: list[str], end: str = "      END") -> list[str]:
+    """A small correct subroutine around ``body``."""
+    return ["C     " + name + " - TEST UNIT",
+            f"      SUBROUTINE {name}",
+            "      IMPLICIT NONE",
+            "      INTEGER I, J",
+            "      CHARACTER*8 S",
+            *body,
+            "      RETURN",
+            end]
+
+
+def rules(directory: Path, compiler: str | None = None) -> set[str]:
+    return {v.rule for v in check_dir(directory, compiler=compiler)}
+
+
+def only(directory: Path, rule: str) -> list[Violation]:
+    """The violations, asserting they are all of ``rule`` (and some exist)."""
+    found = check_dir(directory, compiler=None)
+    assert found, f"{rule} not flagged"
+    assert {v.rule for v in found} == {rule}, "\n".join(map(str, found))
+    return found
+
+
+# ---------------------------------------------------------------------------
+# Clean files.
+# ---------------------------------------------------------------------------
+CLEAN_MAIN = [
+    "C=======================================================================",
+    "C     TZMAIN - TEST PROGRAM: COMMON AND PARAMETER SHARED WITH CMADD",
+    "C=======================================================================",
+    "      PROGRAM TZMAIN",
+    "      IMPLICIT NONE",
+    "      INTEGER MAXPAD",
+    "      PARAMETER (MAXPAD = 500)",
+    "      CHARACTER*8 NAME",
+    "      CHARACTER*(*) TITLE",
+    "      PARAMETER (TITLE = 'It''s; \"ok\" ! <>')",
+    "      INTEGER NPAD, IPX(MAXPAD), I",
+    "      REAL SCALE",
+    "      DOUBLE PRECISION D",
+    "      LOGICAL DONE",
+    "      COMMON /CMPAD/ NPAD, IPX",
+    "      COMMON /CMNAM/ NAME, SCALE",
+    "      EXTERNAL CMADD",
+    "      DATA DONE /.FALSE./",
+    "      NPAD = 0",
+    "      NAME = 'lower ok'",
+    "      SCALE = 1.0E+2 * .5E1",
+    "      D = 1.5D0",
+    "      DO 10, I = 1, MAXPAD",
+    "         IPX(I) = 0",
+    "   10 CONTINUE",
+    "      IF (NPAD .EQ. 0 .AND. SCALE .GT. 1.5) CALL CMADD(10)",
+    "      IF (NPAD .GT. 0) THEN",
+    "         WRITE (*, '(A, I5)') 'pads: ', NPAD",
+    "      ELSE IF (NPAD .LT. 0) THEN",
+    "         GO TO 20",
+    "      ELSE",
+    "         DONE = .TRUE.",
+    "      END IF",
+    "      WRITE (*, 100) NAME(1:4), TITLE, 'a string that goes on and on acr",
+    "     1oss a continuation line', NPAD",
+    "   20 CONTINUE",
+    "  100 FORMAT (1X, A4, A, A/1X, I5)",
+    "      END",
+]
+CLEAN_SUB = [
+    "C     CMADD - ADD ONE PAD",
+    "*     (A STAR COMMENT CARD)",
+    "      SUBROUTINE CMADD(IX)",
+    "      IMPLICIT NONE",
+    "      INTEGER IX",
+    "      INTEGER MAXPAD",
+    "      PARAMETER (MAXPAD = 500)",
+    "      INTEGER NPAD, IPX",
+    "      DIMENSION IPX(MAXPAD)",
+    "      COMMON /CMPAD/ NPAD,",
+    "     1               IPX",
+    "      IF (NPAD .GE. MAXPAD) RETURN",
+    "      NPAD = NPAD + 1",
+    "      IPX(NPAD) = IX",
+    "      RETURN",
+    "      END",
+]
+
+
+def test_clean_files_pass(tmp_path: Path) -> None:
+    write(tmp_path, "tzmain.f", CLEAN_MAIN)
+    write(tmp_path, "cmadd.f", CLEAN_SUB)
+    assert check_dir(tmp_path, compiler=None) == []
+
+
+@needs_gfortran
+def test_clean_files_pass_gfortran_and_leave_no_files(tmp_path: Path) -> None:
+    write(tmp_path, "tzmain.f", CLEAN_MAIN)
+    write(tmp_path, "cmadd.f", CLEAN_SUB)
+    before = sorted(tmp_path.iterdir())
+    assert check_dir(tmp_path) == []
+    assert sorted(tmp_path.iterdir()) == before
+
+
+def test_clean_function_and_block_data(tmp_path: Path) -> None:
+    write(tmp_path, "iadd.f", [
+        "      INTEGER FUNCTION IADD(I, J)",
+        "      IMPLICIT NONE",
+        "      INTEGER I, J",
+        "      IADD = I + J",
+        "      END"])
+    write(tmp_path, "cminit.f", [
+        "      BLOCK DATA CMINIT",
+        "      IMPLICIT NONE",
+        "      INTEGER NPAD",
+        "      COMMON /CMCNT/ NPAD",
+        "      DATA NPAD /0/",
+        "      END"])
+    assert check_dir(tmp_path) == []
+
+
+# ---------------------------------------------------------------------------
+# One rule at a time.
+# ---------------------------------------------------------------------------
+def test_blank_line(tmp_path: Path) -> None:
+    write(tmp_path, "sub.f", subroutine("SUB", ["", "   "]))
+    found = only(tmp_path, "F77-BLANK")
+    assert [(v.line, v.col) for v in found] == [(6, 1), (7, 1)]
+
+
+def test_column_73(tmp_path: Path) -> None:
+    write(tmp_path, "sub.f", subroutine("SUB", ["      I = 1".ljust(72) + "SUB00010",
+                                                "C" + "-" * 72]))
+    found = only(tmp_path, "F77-COL72")
+    assert [(v.line, v.col) for v in found] == [(6, 73), (7, 73)]
+
+
+def test_tab(tmp_path: Path) -> None:
+    write(tmp_path, "sub.f", subroutine("SUB", ["      I = 1\t", "C\tCOMMENT"]))
+    found = only(tmp_path, "F77-TAB")
+    assert [(v.line, v.col) for v in found] == [(6, 12), (7, 2)]
+
+
+def test_charset(tmp_path: Path) -> None:
+    write(tmp_path, "sub.f", subroutine("SUB", ["      I = 1 @ 2",
+                                                "C     ПРИМЕР 1"]))
+    found = only(tmp_path, "F77-CHARSET")
+    assert [(v.line, v.col) for v in found] == [(6, 13), (7, 7)]
+
+
+def test_lower_case(tmp_path: Path) -> None:
+    write(tmp_path, "sub.f", subroutine("SUB", ["      i = 1", "      S = 'ok' // 'OK'",
+                                                "C     comments may be lower case"]))
+    found = only(tmp_path, "F77-LOWER")
+    assert [(v.line, v.col) for v in found] == [(6, 7)]
+
+
+@pytest.mark.parametrize("mark", ["c", "!"])
+def test_comment_mark(tmp_path: Path, mark: str) -> None:
+    write(tmp_path, "sub.f", subroutine("SUB", [mark + "     A COMMENT"]))
+    assert [(v.line, v.col) for v in only(tmp_path, "F77-COMMENT")] == [(6, 1)]
+
+
+@pytest.mark.parametrize("line,col", [
+    ("  1A  CONTINUE", 4),
+    ("   00 CONTINUE", 1),
+    ("I = 1", 1),
+])
+def test_label_field(tmp_path: Path, line: str, col: int) -> None:
+    write(tmp_path, "sub.f", subroutine("SUB", [line]))
+    assert [(v.line, v.col) for v in only(tmp_path, "F77-LABEL")] == [(6, col)]
+
+
+def test_label_on_continuation(tmp_path: Path) -> None:
+    write(tmp_path, "sub.f", subroutine("SUB", ["      I = 1 +", "   10+    2"]))
+    assert [(v.line, v.col) for v in only(tmp_path, "F77-LABEL")] == [(7, 4)]
+
+
+def test_continuation_mark_not_f77(tmp_path: Path) -> None:
+    write(tmp_path, "sub.f", subroutine("SUB", ["      I = 1 +", "     #    2"]))
+    assert [(v.line, v.col) for v in only(tmp_path, "F77-CONT")] == [(7, 6)]
+
+
+def test_continuation_without_statement(tmp_path: Path) -> None:
+    write(tmp_path, "sub.f", ["     1C NOT A COMMENT", *subroutine("SUB", [])])
+    found = only(tmp_path, "F77-CONT")
+    assert [(v.line, v.col) for v in found] == [(1, 6)]
+    assert "no statement to continue" in found[0].message
+
+
+def test_twenty_continuation_lines(tmp_path: Path) -> None:
+    body = ["      I = 1"] + ["     +  + 1"] * 20
+    write(tmp_path, "sub.f", subroutine("SUB", body))
+    found = only(tmp_path, "F77-CONT")
+    assert [(v.line, v.col) for v in found] == [(26, 6)]
+    assert "more than 19" in found[0].message
+
+
+def test_label_without_statement(tmp_path: Path) -> None:
+    write(tmp_path, "sub.f", subroutine("SUB", ["   30"]))
+    assert [(v.line, v.col) for v in only(tmp_path, "F77-STMT")] == [(6, 7)]
+
+
+F90_SNIPPETS: list[tuple[list[str], str]] = [
+    (["      INTEGER :: K"], "'::'"),
+    (["      I = 1 ! NOTE"], "'!' comment"),
+    (["      I = 1; J = 2"], "';'"),
+    (["      IF (I == 1) J = 2"], "'=='"),
+    (["      IF (I /= 1) J = 2"], "'/='"),
+    (["      IF (I < 1) J = 2"], "'<'"),
+    (["      IF (I >= 1) J = 2"], "'>'"),
+    (["      DO 10 WHILE (I .LT. 3)", "   10 CONTINUE"], "DO WHILE"),
+    (["      DO I = 1, 3", "      END DO"], "DO without a statement label"),
+    (["      DO 10 I = 1, 3", "   10 ENDDO"], "END DO"),
+    (["      DO", "   10 CONTINUE"], "DO without a loop control"),
+    (["      MODULE M"], "MODULE"),
+    (["      USE M"], "USE"),
+    (["      CONTAINS"], "CONTAINS"),
+    (["      ALLOCATE (J(10))"], "ALLOCATE"),
+    (["      INTENT (IN) I"], "INTENT"),
+    (["      INTERFACE"], "INTERFACE"),
+    (["      SELECT CASE (I)"], "SELECT CASE"),
+    (["      INCLUDE 'COMMON.INC'"], "INCLUDE"),
+    (["      EXIT"], "EXIT"),
+    (["      IF (I .GT. 1) CYCLE"], "CYCLE"),
+    (["      S = \"DQ\""], "double-quoted"),
+    (["      INTEGER(KIND=4) K"], "KIND="),
+    (["      A_B = 1"], "'_'"),
+    (["      I = J%K"], "'%'"),
+    (["      INTEGER K = 1"], "initialisation in a type statement"),
+]
+
+
+@pytest.mark.parametrize("body,what", F90_SNIPPETS, ids=[s[1] for s in F90_SNIPPETS])
+def test_fortran_90(tmp_path: Path, body: list[str], what: str) -> None:
+    write(tmp_path, "sub.f", subroutine("SUB", body))
+    found = only(tmp_path, "F77-F90")
+    assert any(what in v.message for v in found), "\n".join(map(str, found))
+
+
+def test_end_subroutine_is_fortran_90(tmp_path: Path) -> None:
+    write(tmp_path, "sub.f", subroutine("SUB", [], end="      END SUBROUTINE SUB"))
+    found = only(tmp_path, "F77-F90")
+    assert [v.message for v in found] == ["END SUBROUTINE"]
+
+
+def test_blanks_do_not_hide_keywords(tmp_path: Path) -> None:
+    write(tmp_path, "sub.f", subroutine("SUB", ["      DO 10 I = 1, 3", "   10 E N D D O"]))
+    assert [v.message for v in only(tmp_path, "F77-F90")] == ["END DO"]
+
+
+def test_strings_and_substrings_are_not_fortran_90(tmp_path: Path) -> None:
+    write(tmp_path, "sub.f", subroutine("SUB", [
+        "      S = 'A == B; C /= D :: E ! <> \"Q\" _ % &'",
+        "      S = S(1:2) // 'it''s'",
+        "      J = I / (I + 1)",
+    ]))
+    assert check_dir(tmp_path, compiler=None) == []
+
+
+@pytest.mark.parametrize("line", ["      INTEGER*4 K", "      REAL*8 X",
+                                  "      DOUBLE COMPLEX Z",
+                                  "      PARAMETER K = 1"])
+def test_extensions(tmp_path: Path, line: str) -> None:
+    write(tmp_path, "sub.f", subroutine("SUB", [line]))
+    assert len(only(tmp_path, "F77-EXT")) == 1
+
+
+@pytest.mark.parametrize("body,name", [
+    (["      INTEGER TOOLONG"], "TOOLONG"),
+    (["      INTEGER IPADX", "      COMMON /CMPADS1/ IPADX"], "CMPADS1"),
+    (["      INTEGER MAXPADS", "      PARAMETER (MAXPADS = 5)"], "MAXPADS"),
+    (["      CALL CMPUNCH(1)"], "CMPUNCH"),
+    (["      S = ADJUSTL(S)"], "ADJUSTL"),
+    (["      IF (LENTRIM(S) .GT. 0) I = 1"], "LENTRIM"),
+    (["      DO 10 I = 1, NUMBERS", "   10 CONTINUE"], "NUMBERS"),
+])
+def test_names_longer_than_six(tmp_path: Path, body: list[str], name: str) -> None:
+    write(tmp_path, "sub.f", subroutine("SUB", body))
+    found = only(tmp_path, "F77-NAME")
+    assert [v.message.split()[-7] for v in found] == [name]
+
+
+def test_unit_name_longer_than_six(tmp_path: Path) -> None:
+    write(tmp_path, "toolong.f", subroutine("TOOLONG", []))
+    found = only(tmp_path, "F77-NAME")
+    assert [(v.line, v.col) for v in found] == [(2, 18)]
+
+
+def test_missing_implicit_none(tmp_path: Path) -> None:
+    lines = subroutine("SUB", [])
+    lines.remove("      IMPLICIT NONE")
+    write(tmp_path, "sub.f", lines)
+    found = only(tmp_path, "F77-IMPLICIT")
+    assert [(v.line, v.col) for v in found] == [(2, 7)]
+
+
+def test_other_implicit(tmp_path: Path) -> None:
+    write(tmp_path, "sub.f", subroutine("SUB", ["      IMPLICIT INTEGER (A-Z)"]))
+    assert len(only(tmp_path, "F77-IMPLICIT")) == 1
+
+
+def test_two_units_in_one_file(tmp_path: Path) -> None:
+    write(tmp_path, "sub.f", subroutine("SUB", []) + subroutine("SUB2", []))
+    found = only(tmp_path, "F77-UNIT")
+    assert [(v.line, v.col) for v in found] == [(9, 7)]
+    assert "SUB2" in found[0].message
+
+
+@pytest.mark.parametrize("file_name", ["other.f", "SUB.f"])
+def test_file_named_after_unit(tmp_path: Path, file_name: str) -> None:
+    write(tmp_path, file_name, subroutine("SUB", []))
+    found = only(tmp_path, "F77-UNIT")
+    assert "belongs in sub.f" in found[0].message
+
+
+def test_unnamed_main_program(tmp_path: Path) -> None:
+    write(tmp_path, "main.f", ["      IMPLICIT NONE", "      STOP", "      END"])
+    assert "has no name" in only(tmp_path, "F77-UNIT")[0].message
+
+
+def test_missing_end(tmp_path: Path) -> None:
+    write(tmp_path, "sub.f", subroutine("SUB", [])[:-1])
+    assert "has no END" in only(tmp_path, "F77-UNIT")[0].message
+
+
+def test_common_blocks_must_agree(tmp_path: Path) -> None:
+    write(tmp_path, "suba.f", subroutine("SUBA", [
+        "      INTEGER NPAD, IPX(500)", "      COMMON /CMPAD/ NPAD, IPX"]))
+    write(tmp_path, "subb.f", subroutine("SUBB", [
+        "      INTEGER NPAD, IPX(400)", "      COMMON /CMPAD/ NPAD, IPX"]))
+    write(tmp_path, "subc.f", subroutine("SUBC", [
+        "      INTEGER NPAD", "      REAL IPX(500)", "      COMMON /CMPAD/ NPAD, IPX"]))
+    write(tmp_path, "subd.f", subroutine("SUBD", [
+        "      INTEGER NPAD", "      COMMON /CMPAD/ NPAD"]))
+    write(tmp_path, "sube.f", subroutine("SUBE", [
+        "      INTEGER NPAD, IPX", "      COMMON /CMPAD/ NPAD, IPX(500)"]))
+    found = only(tmp_path, "F77-COMMON")
+    assert [(Path(v.path).name, v.line) for v in found] == [
+        ("subb.f", 7), ("subc.f", 8), ("subd.f", 7)]
+    assert found[0].message == (f"COMMON /CMPAD/ differs from {tmp_path}/suba.f:7: "
+                                "variable 2 is IPX INTEGER(400) here, "
+                                "IPX INTEGER(500) there")
+    assert "1 variables here, 2 there" in found[2].message
+
+
+@pytest.mark.parametrize("line", ["      COMMON I, J", "      COMMON // I, J",
+                                  "      COMMON /CMA/ I, // J"])
+def test_blank_common(tmp_path: Path, line: str) -> None:
+    write(tmp_path, "sub.f", subroutine("SUB", [line]))
+    assert len(only(tmp_path, "F77-BLKCOM")) == 1
+
+
+def test_parameters_must_agree(tmp_path: Path) -> None:
+    write(tmp_path, "suba.f", subroutine("SUBA", [
+        "      INTEGER MAXPAD", "      PARAMETER (MAXPAD = 500)"]))
+    write(tmp_path, "subb.f", subroutine("SUBB", [
+        "      INTEGER MAXPAD", "      PARAMETER (MAXPAD=500)"]))
+    write(tmp_path, "subc.f", subroutine("SUBC", [
+        "      INTEGER MAXPAD", "      PARAMETER (MAXPAD = 400)"]))
+    write(tmp_path, "subd.f", subroutine("SUBD", [
+        "      REAL MAXPAD", "      PARAMETER (MAXPAD = 500)"]))
+    found = only(tmp_path, "F77-PARAM")
+    assert [Path(v.path).name for v in found] == ["subc.f", "subd.f"]
+    assert found[0].message == (f"PARAMETER MAXPAD is INTEGER 400 here, "
+                                f"INTEGER 500 in {tmp_path}/suba.f:7")
+
+
+@needs_gfortran
+def test_undeclared_variable(tmp_path: Path) -> None:
+    write(tmp_path, "sub.f", subroutine("SUB", ["      K = 1"]))
+    found = check_dir(tmp_path)
+    assert [(v.rule, v.line, v.col) for v in found] == [("F77-DECL", 6, 7)]
+    assert "'k'" in found[0].message and "IMPLICIT type" in found[0].message
+
+
+@needs_gfortran
+def test_compile_error(tmp_path: Path) -> None:
+    write(tmp_path, "sub.f", subroutine("SUB", ["      I = (1"]))
+    found = check_dir(tmp_path)
+    assert {v.rule for v in found} == {"F77-COMPILE"}
+    assert found[0].line == 6
+
+
+def test_missing_compiler_is_noted(tmp_path: Path) -> None:
+    write(tmp_path, "sub.f", subroutine("SUB", ["      K = 1"]))
+    notes: list[str] = []
+    assert check_dir(tmp_path, compiler="no-such-f77-compiler", notes=notes) == []
+    assert notes == ["no-such-f77-compiler is not on PATH: the F77-DECL step "
+                     "(every variable declared) was skipped"]
+
+
+def test_violation_format() -> None:
+    v = Violation("legacy/mtfill.f", 12, 73, "F77-COL72", "line has 80 characters")
+    assert str(v) == "legacy/mtfill.f:12:73: F77-COL72: line has 80 characters"
+
+
+def test_subdirectories_and_build_are_walked_correctly(tmp_path: Path) -> None:
+    (tmp_path / "sub").mkdir()
+    (tmp_path / "build").mkdir()
+    write(tmp_path / "sub", "sub.f", subroutine("SUB", ["      i = 1"]))
+    write(tmp_path / "build", "junk.f", ["junk"])
+    assert [(Path(v.path).name, v.rule) for v in check_dir(tmp_path, compiler=None)] \
+        == [("sub.f", "F77-LOWER")]
+
+
+# ---------------------------------------------------------------------------
+# Command line.
+# ---------------------------------------------------------------------------
+def test_cli(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    write(tmp_path, "tzmain.f", CLEAN_MAIN)
+    write(tmp_path, "cmadd.f", CLEAN_SUB)
+    assert main(["f77check", str(tmp_path)]) == 0
+    assert capsys.readouterr().out == "f77check: 2 files, no violations\n"
+    write(tmp_path, "cmadd.f", CLEAN_SUB + [""])
+    assert main(["f77check", str(tmp_path)]) == 1
+    out = capsys.readouterr().out.splitlines()
+    assert out == [f"{tmp_path}/cmadd.f:17:1: F77-BLANK: blank line (use a comment "
+                   "line with C in column 1)",
+                   "f77check: 1 violations in 1 of 2 files"]
+    assert main(["f77check", str(tmp_path / "nowhere")]) == 2
+    (tmp_path / "empty").mkdir()
+    assert main(["f77check", str(tmp_path / "empty")]) == 2
+
+
+def test_every_rule_is_tested() -> None:
+    """Every rule id of RULES is asserted by some test in this file."""
+    source = Path(__file__).read_text(encoding="utf-8")
+    asserted = set(re.findall(r'"(F77-[A-Z0-9]+)"', source))
+    assert asserted == set(RULES), sorted(set(RULES) ^ asserted)
