@@ -51,7 +51,7 @@ def run_tenzor(tenzor_exe: Path, tmp_path: Path):
     """
     counter = iter(range(10**6))
 
-    def run(deck: str | Path, *args: str, out: Path | None = None):
+    def run(deck: str | bytes | Path, *args: str, out: Path | None = None):
         n = next(counter)
         out = out or tmp_path / f"out{n}"
         if isinstance(deck, Path):
@@ -59,7 +59,7 @@ def run_tenzor(tenzor_exe: Path, tmp_path: Path):
             proc = subprocess.run(cmd, capture_output=True, timeout=120)
         else:
             path = tmp_path / f"deck{n}.crd"
-            path.write_bytes(deck.encode("latin-1") if isinstance(deck, str) else deck)
+            path.write_bytes(deck.encode("utf-8") if isinstance(deck, str) else deck)
             cmd = [str(tenzor_exe), str(path), "-o", str(out), *args]
             proc = subprocess.run(cmd, capture_output=True, timeout=120)
         return proc, out

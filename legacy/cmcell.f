@@ -1,5 +1,6 @@
 C=======================================================================
 C     CMCELL - THE GRID CELL OF A POINT, CLAMPED TO THE GRID    (SHARED)
+C     SOURCE:  RECONSTRUCTED.
 C     IX, IY  (INPUT)  INTEGER  THE POINT, 0.01 MM
 C     IC      (OUTPUT) INTEGER  THE CELL, 1..NGX*NGY
 C     CHANGES: 2026-11-22 FIRST RECONSTRUCTION

@@ -1,5 +1,6 @@
 C=======================================================================
 C     CMDST  - THE DISTANCE BETWEEN TWO POINTS                  (SHARED)
+C     SOURCE:  RECONSTRUCTED.
 C     IX1..IY2 (INPUT) INTEGER  THE POINTS, 0.01 MM
 C     CHANGES: 2026-11-22 FIRST RECONSTRUCTION
 C=======================================================================

@@ -1,5 +1,6 @@
 C=======================================================================
 C     CMFCPY - COPY FRAME I OVER FRAME J                        (SHARED)
+C     SOURCE:  RECONSTRUCTED.
 C     I, J    (INPUT)  INTEGER  FRAMES OF /CMFRT/, J .LE. I
 C     CHANGES: 2026-11-22 FIRST RECONSTRUCTION
 C=======================================================================

@@ -1,5 +1,6 @@
 C=======================================================================
 C     CMFEQ  - ARE TWO FRAMES THE SAME, WITH NO CYCLE ON EITHER (SHARED)
+C     SOURCE:  RECONSTRUCTED.
 C     I, J    (INPUT)  INTEGER  FRAMES OF /CMFRT/
 C     CHANGES: 2026-11-22 FIRST RECONSTRUCTION
 C=======================================================================

@@ -1,5 +1,6 @@
 C=======================================================================
 C     CMITCD - THE CARD AND COLUMN OF AN ITEM, FOR MESSAGES     (SHARED)
+C     SOURCE:  RECONSTRUCTED.
 C     I       (INPUT)  INTEGER  THE ITEM IN /CMITM/
 C     ICRD    (OUTPUT) INTEGER  ITS CARD (D, L, O OR A)
 C     ICOL    (OUTPUT) INTEGER  THE COLUMN OF ITS X FIELD

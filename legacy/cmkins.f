@@ -1,5 +1,6 @@
 C=======================================================================
 C     CMKINS - INSERT INTO A SHORT LIST OF THE NEAREST         (SHARED)
+C     SOURCE:  RECONSTRUCTED.
 C     NBI,NBD (IN/OUT) THE ENDS AND THEIR SQUARED DISTANCES, NEAREST
 C                      FIRST (TIES: SMALLER END FIRST)
 C     N       (IN/OUT) INTEGER  HOW MANY ARE LISTED, AT MOST MXN

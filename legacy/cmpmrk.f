@@ -1,5 +1,6 @@
 C=======================================================================
 C     CMPMRK - MARK ONE POINT ON THE CONTROL PLOT               (SHARED)
+C     SOURCE:  RECONSTRUCTED.
 C     GRID    (IN/OUT) CHARACTER*(*)     THE PLOT, NR LINES OF NC
 C     NC, NR  (INPUT)  INTEGER           ITS COLUMNS AND LINES
 C     CW, CH  (INPUT)  DOUBLE PRECISION  WIDTH AND HEIGHT OF A PRINT

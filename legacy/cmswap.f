@@ -1,5 +1,6 @@
 C=======================================================================
 C     CMSWAP - EXCHANGE TWO INTEGERS                            (SHARED)
+C     SOURCE:  RECONSTRUCTED.
 C     CHANGES: 2026-11-22 FIRST RECONSTRUCTION
 C=======================================================================
       SUBROUTINE CMSWAP(IA, IB)

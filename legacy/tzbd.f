@@ -26,4 +26,5 @@ C     X = 12, Y = 13, DX = 20, DY = 21, CYC = 30 (OCTAL)
       DATA ICX, ICY, ICDX, ICDY, ICCYC / 10, 11, 16, 17, 24 /
 C     K = 16, KK = 17, GM = 37, MINUS = 14 (OCTAL)
       DATA ICK, ICKK, ICGM, ICMIN / 14, 15, 31, 12 /
+C     END OF TZBD
       END

@@ -1,5 +1,6 @@
 C=======================================================================
 C     TZWADD - WIDEN THE PLOT WINDOW TO HOLD A DISC             (TENZOR)
+C     SOURCE:  RECONSTRUCTED.
 C     X, Y    (INPUT)  DOUBLE PRECISION  THE CENTRE, 0.01 MM
 C     R       (INPUT)  DOUBLE PRECISION  THE RADIUS, 0.01 MM
 C     CHANGES: 2026-11-22 FIRST RECONSTRUCTION

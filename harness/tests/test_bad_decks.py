@@ -1,0 +1,192 @@
+"""Bad decks: every fault is reported with its card and column, no tape of the
+faulty package is written, the other packages are, and the exit status is 1.
+Nothing a deck holds may crash TENZOR or leak a Fortran runtime message."""
+from __future__ import annotations
+
+import re
+
+import pytest
+
+from harness import tape
+
+
+def card(**cols: str) -> str:
+    """A card image: card(c1='D', c11='     12.50') puts text at those columns."""
+    line = [" "] * 80
+    for key, text in cols.items():
+        start = int(key[1:]) - 1
+        line[start:start + len(text)] = list(text)
+    return "".join(line).rstrip()
+
+
+def f10(v: str) -> str:
+    return v.rjust(10)
+
+
+GOOD = "GOOD\n" + card(c1="M", c31=f10("1.00"), c56="   10") + "\nC\n"
+NAME = "BAD\n"
+P = card(c1="P", c11=f10("100.00"), c21=f10("100.00"))
+
+# (id, the faulty package's cards after its name card, card number, column, message fragment)
+# Card numbers count from 1 over the whole deck: GOOD is cards 1-3, BAD's name card is 4.
+CASES = [
+    ("malformed-number", [P, card(c1="M", c31="    1.2x5 ", c56="   10")], 6, 38,
+     "DX IN COLS 31-40: 'x' IS NOT PART OF A NUMBER"),
+    ("blank-inside", [P, card(c1="M", c31="   1 2.50 ", c56="   10")], 6, 35, "BLANK INSIDE"),
+    ("not-right-justified", [P, card(c1="M", c31="1250      ", c56="   10")], 6, 35, "RIGHT-JUSTIFY"),
+    ("third-decimal", [P, card(c1="M", c31="    1.255 ", c56="   10")], 6, 39, "MORE THAN 2 DECIMALS"),
+    ("bad-k", [P, card(c1="M", c31=f10("1.00"), c56="   15")], 6, 56, "K 15 IS NOT A COMMAND"),
+    ("blank-k", [P, card(c1="M", c31=f10("1.00"))], 6, 60, "K IN COLS 56-60 IS BLANK"),
+    ("cyc-one", [P, card(c1="M", c31=f10("1.00"), c51="    1", c56="   10")], 6, 51, "CYC MUST BE 2 OR MORE"),
+    ("arc-off-circle", [P, card(c1="M", c11=f10("3.00"), c31=f10("-3.00"), c41=f10("-2.00"), c56="   13")],
+     6, 31, "ARC END IS OFF ITS CIRCLE"),
+    ("x-on-a-line", [P, card(c1="M", c11=f10("3.00"), c31=f10("1.00"), c56="   10")], 6, 11, "X IS FOR ARCS"),
+    ("arc-without-radius", [P, card(c1="M", c31=f10("1.00"), c56="   11")], 6, 11, "AN ARC NEEDS X OR Y"),
+    ("radius-over-10m", [P, card(c1="M", c11=f10("10000.01"), c56="   13")], 6, 11, "RADIUS OVER 10 M"),
+    ("bad-tape-letter", [P, card(c1="M", c2="Q", c31=f10("1.00"), c56="   10")], 6, 2, "TAPE 'Q'"),
+    ("cyc-on-last-frame", [P, card(c1="M", c31=f10("1.00"), c51="    3", c56="   10")], 6, 51,
+     "CYC ON THE LAST M FRAME OF TAPE L"),
+    ("line-too-long", [P, "M" + " " * 85], 6, 81, "A CARD HAS AT MOST 80 COLUMNS"),
+    ("tab", [P, "M\t" + " " * 20], 6, 2, "TAB CHARACTER"),
+    ("non-ascii", [P, "M  \u0416"], 6, 4, "IS NOT A CARD CHARACTER"),
+    ("unknown-type", [P, card(c1="Q")], 6, 1, "UNKNOWN CARD TYPE 'Q'"),
+    ("lower-case-type", [P, card(c1="m", c31=f10("1.00"), c56="   10")], 6, 1, "LOWER CASE"),
+    ("no-type", [P, card(c11=f10("1.00"))], 6, 1, "NO CARD TYPE IN COL 1"),
+    ("second-p", [P, P], 6, 1, "SECOND P CARD"),
+    ("p-after-geometry", [card(c1="M", c31=f10("1.00"), c56="   10"), P], 6, 1, "P CARD AFTER THE GEOMETRY"),
+    ("scale-off-list", [card(c1="P", c11=f10("100.00"), c21=f10("100.00"), c63="  3", c66="  1")], 5, 63,
+     "SCALE IS NOT ONE OF THE MACHINE'S"),
+    ("start-off-field", [card(c1="P", c11=f10("1300.00"))], 5, 11, "OFF THE 1200 X 1200 MM FIELD"),
+    ("zero-tool", [card(c1="P", c11=f10("10.00"), c21=f10("10.00"), c31="    0.00")], 5, 31, "TOOL W1"),
+    ("bad-code-letter", [card(c1="P", c11=f10("10.00"), c21=f10("10.00"), c70="Q")], 5, 70, "TAPE CODE 'Q'"),
+    ("bad-order-letter", [card(c1="P", c11=f10("10.00"), c21=f10("10.00"), c71="X")], 5, 71, "ORDER 'X'"),
+    ("leaves-field", [card(c1="M", c31=f10("-1.00"), c56="   10")], 5, 31, "LEAVES THE 1200 X 1200 MM FIELD"),
+    ("leaves-field-at-scale", [card(c1="P", c11=f10("600.00"), c21=f10("600.00"), c63="100", c66="  1"),
+                               card(c1="M", c31=f10("7.00"), c56="   10")], 6, 31, "SCALE 100:1"),
+    ("pad-smaller-than-tool", [P, card(c1="D", c11=f10("1.00"), c21=f10("1.00"), c31="    0.30")], 6, 31,
+     "PAD SIZE 0.30 MM IS SMALLER THAN TOOL W1 0.50 MM"),
+    ("rect-pad-too-thin", [P, card(c1="D", c31="    1.00", c39="    0.40")], 6, 39, "SMALLER THAN TOOL W1"),
+    ("row-without-step", [P, card(c1="D", c31="    1.00", c47="   4")], 6, 51, "A ROW OF N PADS NEEDS A STEP"),
+    ("pad-without-size", [P, card(c1="D", c11=f10("1.00"))], 6, 31, "PAD SIZE W IN COLS 31-38"),
+    ("plus-without-l", [P, card(c1="+", c11=f10("1.00"))], 6, 1, "+ CARD WITH NO CONDUCTOR OPEN"),
+    ("zero-length-conductor", [P, card(c1="L", c11=f10("1.00")), card(c1="+", c11=f10("1.00"))], 6, 11,
+     "ZERO-LENGTH CONDUCTOR"),
+    ("lonely-l", [P, card(c1="L", c11=f10("1.00"))], 6, 11, "ZERO-LENGTH CONDUCTOR"),
+    ("narrow-conductor", [P, card(c1="L", c31="    0.20"), card(c1="+", c11=f10("5.00"))], 6, 31,
+     "NARROWER THAN TOOL W3"),
+    ("circle-without-direction", [P, card(c1="O", c31=f10("2.00"))], 6, 2, "DIRECTION ' '"),
+    ("circle-radius-zero", [P, card(c1="O", c2="+", c31=f10("0.00"))], 6, 31, "RADIUS R IN COLS 31-40"),
+    ("circle-too-big", [P, card(c1="O", c2="+", c31=f10("10000.01"))], 6, 31, "RADIUS OVER 10 M"),
+    ("arc-card-off-circle", [P, card(c1="A", c2="+", c31=f10("5.00"), c51=f10("0.00"), c61=f10("5.02"))],
+     6, 51, "ARC END IS OFF ITS CIRCLE"),
+    ("arc-start-is-end", [P, card(c1="A", c2="+", c31=f10("5.00"), c51=f10("5.00"))], 6, 51,
+     "ENDS WHERE IT STARTS"),
+    ("coordinate-beyond-any-field", [P, card(c1="D", c11=f10("130000.00"), c31="    1.00")], 6, 11,
+     "OFF THE FIELD AT EVERY SCALE"),
+    ("control-card-inside", [P, "*NAME X"], 6, 1, "CONTROL CARD INSIDE A PACKAGE"),
+]
+
+
+def _deck(cards: list[str], end: str = "E") -> str:
+    return GOOD + NAME + "\n".join(cards) + f"\n{end}\n"
+
+
+@pytest.mark.parametrize("cards,cardno,col,fragment", [c[1:] for c in CASES], ids=[c[0] for c in CASES])
+def test_bad_card_is_reported_and_stops_only_its_package(run_tenzor, cards, cardno, col, fragment):
+    proc, out = run_tenzor(_deck(cards))
+    err = proc.stderr.decode()
+    assert proc.returncode == 1, err
+    assert f"ERROR CARD {cardno} COL {col}: " in err, err
+    assert fragment in err, err
+    assert "Fortran runtime" not in err and "Backtrace" not in err
+    # the good package is punched, the bad one has a listing and nothing else
+    assert (out / "GOOD-cond.ptp").exists()
+    assert sorted(p.name for p in out.glob("BAD*")) == ["BAD.lst"]
+    assert not list(out.glob(".*")), "temporary files left behind"
+    listing = (out / "BAD.lst").read_text()
+    assert fragment in listing
+    assert "NO TAPES PUNCHED" in listing
+    # the listing shows a caret under the column of the fault
+    lines = listing.splitlines()
+    at = next(i for i, line in enumerate(lines) if f"ERROR CARD {cardno} COL {col}" in line)
+    assert lines[at - 1].rstrip().endswith("^") and len(lines[at - 1].rstrip()) == 9 + col
+
+
+def test_missing_e_card(run_tenzor):
+    proc, out = run_tenzor(GOOD + NAME + P + "\n")
+    err = proc.stderr.decode()
+    assert proc.returncode == 1
+    assert "THE DECK ENDS WITHOUT THE E CARD" in err
+    assert sorted(p.name for p in out.glob("BAD*")) == ["BAD.lst"]
+    assert (out / "GOOD-cond.ptp").exists()
+
+
+def test_main_naming_another_program_refuses_the_job(run_tenzor):
+    deck = "*NAME JOB\n*MAIN OTHER\n*EXECUTE\n" + GOOD.replace("C\n", "E\n")
+    proc, out = run_tenzor(deck)
+    err = proc.stderr.decode()
+    assert proc.returncode == 1
+    assert re.search(r"ERROR CARD 2 COL \d+: \*MAIN NAMES OTHER", err), err
+    assert not list(out.glob("*.ptp")), "no tapes when the envelope is wrong"
+    assert "NO TAPES ARE PUNCHED" in (out / "GOOD.lst").read_text()
+
+
+@pytest.mark.parametrize("deck,fragment", [
+    ("", "THE DECK HOLDS NO PACKAGE"),
+    ("\n\n   \n", "THE DECK HOLDS NO PACKAGE"),
+    ("*NAME X\n*EXECUTE\n", "NO PACKAGE AFTER *EXECUTE"),
+    (GOOD, "ENDED WITH C BUT NO PACKAGE FOLLOWS"),
+    (GOOD.replace("C\n", "E\n") + "MORE\n", "CARD AFTER THE FINAL E CARD"),
+    ("*NAME X\nGOOD\nE\n", "DATA BEFORE *EXECUTE"),
+    ("*WHAT\n*EXECUTE\nGOOD\nE\n", "UNKNOWN CONTROL CARD"),
+])
+def test_deck_level_faults(run_tenzor, deck, fragment):
+    proc, _ = run_tenzor(deck)
+    assert proc.returncode == 1
+    assert fragment in proc.stderr.decode()
+
+
+def test_duplicate_package_names_keep_both_listings(run_tenzor):
+    deck = GOOD + GOOD.replace("C\n", "E\n")
+    proc, out = run_tenzor(deck)
+    assert proc.returncode == 1
+    assert "PACKAGE NAME GOOD IS ALREADY USED" in proc.stderr.decode()
+    assert (out / "GOOD.lst").exists() and (out / "GOOD-2.lst").exists()
+    assert not (out / "GOOD-2-cond.ptp").exists()
+
+
+def test_blank_name_card_is_an_error(run_tenzor):
+    deck = card(c20="X") + "\n" + card(c1="M", c31=f10("1.00"), c56="   10") + "\nE\n"
+    proc, out = run_tenzor(deck)
+    assert proc.returncode == 1
+    assert "THE NAME CARD IS BLANK IN COLS 1-18" in proc.stderr.decode()
+    assert (out / "PACKAGE.lst").exists()
+
+
+def test_too_many_errors_are_cut_at_fifty(run_tenzor):
+    cards = [P] + [card(c1="Q")] * 70
+    proc, out = run_tenzor(_deck(cards))
+    err = proc.stderr.decode()
+    assert err.count("UNKNOWN CARD TYPE") == 50
+    assert "TOO MANY ERRORS" in err
+    assert "TOO MANY ERRORS" in (out / "BAD.lst").read_text()
+
+
+def test_capacity_of_m_cards_is_named(run_tenzor):
+    cards = [P] + [card(c1="M", c31=f10("0.01"), c56="   10")] * 20001
+    proc, _ = run_tenzor(_deck(cards))
+    assert proc.returncode == 1
+    assert "(PARAMETER MXMAN)" in proc.stderr.decode()
+
+
+def test_failed_package_leaves_earlier_good_tapes_untouched(run_tenzor, tmp_path):
+    out = tmp_path / "keep"
+    good = "BAD\n" + P + "\n" + card(c1="M", c31=f10("1.00"), c56="   10") + "\nE\n"
+    proc, _ = run_tenzor(good, out=out)
+    assert proc.returncode == 0
+    before = (out / "BAD-cond.ptp").read_bytes()
+    proc, _ = run_tenzor(_deck([P, card(c1="Q")]), out=out)
+    assert proc.returncode == 1
+    assert (out / "BAD-cond.ptp").read_bytes() == before
+    assert tape.decode(before).frames[0] == tape.Frame(dx=100, k=10)
+    assert "EARLIER TAPES OF THIS NAME, IF ANY, ARE LEFT AS THEY WERE" in (out / "BAD.lst").read_text()
