@@ -28,10 +28,11 @@ C     ---- LOCAL -------------------------------------------------------
      1            'NOLOADLIST', 'CALL', 'EXECUTE', 'ENDFILE' /
       DATA LKEY / 4, 4, 4, 4, 5, 4, 10, 4, 7, 7 /
 C
-C     THE CARD FROM COLUMN 2, IN UPPER CASE, WITHOUT BLANKS AND _
+C     COLUMNS 2-72 (73-80 ARE THE SEQUENCE FIELD), IN UPPER CASE,
+C     WITHOUT BLANKS AND _
       WORK = ' '
       L = 0
-      DO 10 I = 2, 80
+      DO 10 I = 2, 72
          CH = CARD(I:I)
          K = INDEX(LOWER, CH)
          IF (K .GT. 0) CH = UPPER(K:K)

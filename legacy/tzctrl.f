@@ -66,7 +66,7 @@ C     ---- THE ARGUMENT: AFTER THE KEYWORD, A BLANK OR :, UPPER CASE ---
          END IF
       END IF
       ARG = ' '
-      IF (IA .LE. 72) ARG = WORK(IA:72)
+      IF (IA .LE. 71) ARG = WORK(IA:71)
       CALL CMTRIM(ARG, L)
       IF (IKEY .EQ. 1) THEN
          JOBNAM = ARG(1:40)
