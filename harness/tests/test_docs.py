@@ -1,0 +1,43 @@
+"""The documentation stays true: every example card of docs/CARDS.md is a card
+TENZOR accepts, column for column, and README's table of files is what TENZOR
+writes."""
+from __future__ import annotations
+
+import re
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parents[2]
+
+
+def _example_cards() -> list[str]:
+    text = (ROOT / "docs" / "CARDS.md").read_text()
+    cards = []
+    for block in re.findall(r"```\n----\+----1.*?\n(.*?)```", text, re.S):
+        if "..." in block:  # the outline of a package, not cards
+            continue
+        cards += [line for line in block.splitlines() if line[:1] in "PDL+OAM"]
+    return cards
+
+
+def test_cards_md_examples_are_accepted(run_tenzor):
+    cards = _example_cards()
+    kinds = {c[0] for c in cards}
+    assert kinds == set("PDL+OAM"), kinds
+    p = [c for c in cards if c[0] == "P"]
+    rest = [c for c in cards if c[0] != "P"]
+    # the example P card asks for a 1:1 board at (100, 100) mm: everything fits
+    deck = "DOCS\n" + "\n".join(p + rest) + "\nE\n"
+    proc, out = run_tenzor(deck)
+    assert proc.returncode == 0, proc.stderr.decode()
+    assert (out / "DOCS-cond.ptp").exists()
+
+
+def test_readme_names_the_files_tenzor_writes(run_tenzor):
+    readme = (ROOT / "README.md").read_text()
+    proc, out = run_tenzor(ROOT / "examples" / "report" / "example4.crd")
+    assert proc.returncode == 0
+    for path in out.iterdir():
+        suffix = re.sub(r"^EXAMPLE4", "NAME", path.name)
+        pattern = suffix.replace("-small.txt", "-*.txt").replace("-large.txt", "-*.txt") \
+                        .replace("-cond.txt", "-*.txt")
+        assert f"`{pattern}`" in readme, pattern
