@@ -1,15 +1,17 @@
 C=======================================================================
 C     CMGRID - BUCKET THE ENDS LISTED IN KCEL(1..NP) ON A GRID  (SHARED)
 C     SOURCE:  RECONSTRUCTED. SQUARE CELLS OF ABOUT ONE END EACH OVER
-C              THE BOX OF THE ENDS; KCEL IS REWRITTEN CELL BY CELL,
+C              THE BOX OF THE ENDS (OR NPC EACH); KCEL IS REWRITTEN CELL
+C              BY CELL,
 C              KCST(C) IS WHERE CELL C STARTS, KCCN(C) HOW MANY OF ITS
 C              ENDS ARE STILL LIVE, KSLT(P) WHERE END P STANDS.
 C     NP      (INPUT)  INTEGER  NUMBER OF ENDS LISTED
+C     NPC     (INPUT)  INTEGER  ABOUT HOW MANY ENDS A CELL SHOULD HOLD
 C     CHANGES: 2026-11-22 FIRST RECONSTRUCTION
 C=======================================================================
-      SUBROUTINE CMGRID(NP)
+      SUBROUTINE CMGRID(NP, NPC)
       IMPLICIT NONE
-      INTEGER NP
+      INTEGER NP, NPC
 C     ---- /CMITM/ THE ITEMS OF A TAPE AND THE TOUR THROUGH THEM -------
       INTEGER MXITM
       PARAMETER (MXITM = 300000)
@@ -46,7 +48,7 @@ C
       KGY0 = IY1
       W = MAX(IX2 - IX1, 1)
       H = MAX(IY2 - IY1, 1)
-      CS = MAX(1.0D0, SQRT(W * H / MAX(NP, 1)))
+      CS = MAX(1.0D0, SQRT(W * H * NPC / MAX(NP, 1)))
       CS = MAX(CS, MAX(W, H) / 2000.0D0)
    20 CONTINUE
       KGCS = INT(CS)

@@ -29,7 +29,8 @@ C     ---- /CMTWK/ WORK SPACE OF THE TOUR: GRID, NEIGHBOURS, QUEUE -----
 C     ---- LOCAL -------------------------------------------------------
       INTEGER IP, IC, ICX, ICY, K, IGX, IGY, IS, IQ, ISTEP, KMAX, N, J,
      1        NBI(MXNB)
-      DOUBLE PRECISION D, RK, NBD(MXNB)
+      DOUBLE PRECISION D, RK, NBD(MXNB), CMRBND
+      EXTERNAL CMRBND
 C
       KMAX = MAX(NGX, NGY)
       DO 60 IP = 1, NP
@@ -56,7 +57,8 @@ C                    NOT ITSELF, NOT THE OTHER END OF ITS OWN ITEM
    10             CONTINUE
    20          CONTINUE
    30       CONTINUE
-            RK = DBLE(K) * KGCS
+            RK = CMRBND(KQX(IP), KQY(IP), ICX, ICY, K)
+            IF (RK .GE. 1.0D299) GOTO 45
             IF (N .EQ. MXNB) THEN
                IF (NBD(N) .LE. RK * RK) GOTO 45
             END IF

@@ -31,7 +31,8 @@ C     ---- /CMTWK/ WORK SPACE OF THE TOUR: GRID, NEIGHBOURS, QUEUE -----
      1               KQX, KQY, KCST, KCCN, KCEL, KSLT, KNB, KQUE, LQUE
 C     ---- LOCAL -------------------------------------------------------
       INTEGER IC, ICX, ICY, K, IGX, IGY, IS, IP, ISTEP, KMAX
-      DOUBLE PRECISION D, RK
+      DOUBLE PRECISION D, RK, CMRBND
+      EXTERNAL CMRBND
 C
       IB = 0
       DB = 1.0D300
@@ -61,7 +62,8 @@ C           THE LEFT AND THE RIGHT ONE
    10          CONTINUE
    20       CONTINUE
    30    CONTINUE
-         RK = DBLE(K) * KGCS
+         RK = CMRBND(IQX, IQY, ICX, ICY, K)
+         IF (RK .GE. 1.0D299) RETURN
          IF (IB .NE. 0 .AND. DB .LE. RK * RK) RETURN
    40 CONTINUE
       RETURN

@@ -62,7 +62,7 @@ C     CMGRID BUCKETS THE ENDS LISTED IN KCEL(1..NP).
       DO 20 I = 1, NP
          KCEL(I) = I
    20 CONTINUE
-      CALL CMGRID(NP)
+      CALL CMGRID(NP, 1)
       NBUILT = NP
       NLIVE = NP
       IQX = ISX
@@ -73,7 +73,7 @@ C     CMGRID BUCKETS THE ENDS LISTED IN KCEL(1..NP).
       IF (NLIVE .LT. NBUILT / 4 .AND. NLIVE .GT. 64) THEN
 C        FEW ENDS LEFT: A SMALLER GRID OF THE LIVE ENDS ONLY
          CALL CMGLIV(NLIVE)
-         CALL CMGRID(NLIVE)
+         CALL CMGRID(NLIVE, 1)
          NBUILT = NLIVE
       END IF
       CALL CMNN(IQX, IQY, IB, DB)
@@ -100,7 +100,7 @@ C     ---- 2. 2-OPT WITH NEIGHBOUR LISTS -------------------------------
       DO 60 I = 1, NP
          KCEL(I) = I
    60 CONTINUE
-      CALL CMGRID(NP)
+      CALL CMGRID(NP, 3)
       CALL CMKNN(NP)
       CALL CMOPT2
       RETURN
