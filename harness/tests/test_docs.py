@@ -41,3 +41,14 @@ def test_readme_names_the_files_tenzor_writes(run_tenzor):
         pattern = suffix.replace("-small.txt", "-*.txt").replace("-large.txt", "-*.txt") \
                         .replace("-cond.txt", "-*.txt")
         assert f"`{pattern}`" in readme, pattern
+
+
+def test_filling_md_row_excerpt_is_the_demo_tape(run_tenzor):
+    """docs/FILLING.md quotes the first frames of the demo's small-pad tape."""
+    text = (ROOT / "docs" / "FILLING.md").read_text()
+    block = text.split("## Rows of pads", 1)[1].split("```", 2)[1]
+    quoted = [line[:25].rstrip() for line in block.strip().splitlines()]
+    proc, out = run_tenzor(ROOT / "examples" / "demo.crd")
+    assert proc.returncode == 0
+    frames = (out / "LOGIC-CARD-A-small.txt").read_text().splitlines()
+    assert frames[1:1 + len(quoted)] == quoted
