@@ -1,0 +1,648 @@
+"""TENZOR card decks, read independently, and the IDEAL layers they describe.
+
+Source: SPEC section 5 (card layout) and the harness's project decisions on
+what each card should look like on film.  All lengths are integers in
+0.01 mm ("units") unless a name ends in ``_mm``.
+
+The parser reads VALID decks only, strictly: anything it does not
+understand (a malformed number, a non-blank unused column, a card out of
+place) raises ValueError naming the 1-based card (line) number, so that a
+test can never pass on a misread deck.  Error diagnosis is TENZOR's job.
+
+Ideal shapes (each with a vectorised signed distance ``sdf(x, y)`` in units,
+negative inside, and a ``bbox()``):
+
+* round pad: :class:`Disc` of diameter W;
+* rectangular pad: :class:`RoundRect`, the W x H rectangle with corners
+  rounded to the radius of its tape's tool;
+* conductor: :class:`Stroke`, polyline (+) disc of diameter W (round caps
+  and joins);
+* circle O / arc A: :class:`ArcBand`, the points within w3/2 of the circle
+  or arc;
+* M frames: their own drawing, simulated by :mod:`harness.sim` from the
+  start point with the tool of their tape (see :func:`run_shapes`).
+"""
+
+from __future__ import annotations
+
+import math
+import re
+from collections.abc import Iterator, Sequence
+from dataclasses import dataclass, field
+from decimal import Decimal
+from typing import Protocol, Union
+
+import numpy as np
+
+from . import sim
+from .tape import Frame, sequence_problem
+
+TWO_PI = 2.0 * math.pi
+LAYERS: tuple[str, ...] = ("small", "large", "cond")
+#: Tape letter of an M card (column 2) -> layer key.
+M_TAPES: dict[str, str] = {"S": "small", "B": "large", "L": "cond", " ": "cond"}
+
+Box = tuple[float, float, float, float]
+
+
+# ---------------------------------------------------------------------------
+# Shapes.
+# ---------------------------------------------------------------------------
+class Shape(Protocol):
+    """An ideal shape: signed distance (units, < 0 inside) and bounding box."""
+
+    def sdf(self, x: np.ndarray, y: np.ndarray) -> np.ndarray: ...
+
+    def bbox(self) -> Box: ...
+
+
+@dataclass(frozen=True)
+class Disc:
+    """Disc of radius r about (cx, cy)."""
+
+    cx: float
+    cy: float
+    r: float
+
+    def sdf(self, x: np.ndarray, y: np.ndarray) -> np.ndarray:
+        return np.hypot(x - self.cx, y - self.cy) - self.r
+
+    def bbox(self) -> Box:
+        return self.cx - self.r, self.cx + self.r, self.cy - self.r, self.cy + self.r
+
+
+@dataclass(frozen=True)
+class RoundRect:
+    """Axis-parallel w x h rectangle about (cx, cy), corners rounded to rc."""
+
+    cx: float
+    cy: float
+    w: float
+    h: float
+    rc: float
+
+    def __post_init__(self) -> None:
+        if not 0 <= self.rc <= min(self.w, self.h) / 2:
+            raise ValueError(f"corner radius {self.rc} does not fit {self.w} x {self.h}")
+
+    def sdf(self, x: np.ndarray, y: np.ndarray) -> np.ndarray:
+        qx = np.abs(x - self.cx) - (self.w / 2 - self.rc)
+        qy = np.abs(y - self.cy) - (self.h / 2 - self.rc)
+        outside = np.hypot(np.maximum(qx, 0.0), np.maximum(qy, 0.0))
+        inside = np.minimum(np.maximum(qx, qy), 0.0)
+        return outside + inside - self.rc
+
+    def bbox(self) -> Box:
+        return (self.cx - self.w / 2, self.cx + self.w / 2,
+                self.cy - self.h / 2, self.cy + self.h / 2)
+
+
+@dataclass(frozen=True)
+class Stroke:
+    """Points within r of a polyline (a single point gives a disc)."""
+
+    points: tuple[tuple[float, float], ...]
+    r: float
+
+    def sdf(self, x: np.ndarray, y: np.ndarray) -> np.ndarray:
+        pts = self.points
+        best = np.hypot(x - pts[0][0], y - pts[0][1])
+        for (ax, ay), (bx, by) in zip(pts, pts[1:]):
+            ex, ey = bx - ax, by - ay
+            ee = ex * ex + ey * ey
+            if ee == 0:
+                continue
+            px, py = x - ax, y - ay
+            t = np.clip((px * ex + py * ey) / ee, 0.0, 1.0)
+            np.minimum(best, np.hypot(px - t * ex, py - t * ey), out=best)
+        return best - self.r
+
+    def bbox(self) -> Box:
+        xs = [p[0] for p in self.points]
+        ys = [p[1] for p in self.points]
+        return min(xs) - self.r, max(xs) + self.r, min(ys) - self.r, max(ys) + self.r
+
+
+@dataclass(frozen=True)
+class ArcBand:
+    """Points within hw of the arc about (cx, cy) of radius rad from angle a0
+    through the signed sweep (radians, + = counter-clockwise); a sweep of
+    +-2*pi is the full circle (an annulus, or a disc if rad < hw)."""
+
+    cx: float
+    cy: float
+    rad: float
+    a0: float
+    sweep: float
+    hw: float
+
+    @property
+    def full(self) -> bool:
+        return abs(self.sweep) >= TWO_PI - 1e-12
+
+    def sdf(self, x: np.ndarray, y: np.ndarray) -> np.ndarray:
+        rx, ry = x - self.cx, y - self.cy
+        ring = np.abs(np.hypot(rx, ry) - self.rad)
+        if self.full:
+            return ring - self.hw
+        ang = np.arctan2(ry, rx)
+        if self.sweep >= 0:
+            t = np.mod(ang - self.a0, TWO_PI)
+        else:
+            t = np.mod(self.a0 - ang, TWO_PI)
+        a1 = self.a0 + self.sweep
+        sx, sy = self.rad * math.cos(self.a0), self.rad * math.sin(self.a0)
+        ex, ey = self.rad * math.cos(a1), self.rad * math.sin(a1)
+        ends = np.minimum(np.hypot(rx - sx, ry - sy), np.hypot(rx - ex, ry - ey))
+        return np.where(t <= abs(self.sweep), ring, ends) - self.hw
+
+    def bbox(self) -> Box:
+        x0, x1, y0, y1 = sim.arc_extent(self.cx, self.cy, self.rad, self.a0, self.sweep)
+        return x0 - self.hw, x1 + self.hw, y0 - self.hw, y1 + self.hw
+
+
+AnyShape = Union[Disc, RoundRect, Stroke, ArcBand]
+
+
+def stroke_shape(s: sim.Stroke, tool: float) -> AnyShape:
+    """What one stroke of a simulated run covers with a round tool of
+    diameter ``tool`` (units)."""
+    r = tool / 2
+    if isinstance(s, sim.Dot):
+        return Disc(s.x, s.y, r)
+    if isinstance(s, sim.Line):
+        return Stroke(((s.x0, s.y0), (s.x1, s.y1)), r)
+    return ArcBand(s.cx, s.cy, s.r, s.a0, s.sweep, r)
+
+
+def run_shapes(run: sim.Run, tool: float) -> list[AnyShape]:
+    """The shapes covered by a run's strokes with the given tool (units)."""
+    return [stroke_shape(s, tool) for s in run.strokes]
+
+
+@dataclass
+class Layer:
+    """An ideal layer: a union of shapes, drawn with ``tool`` (units)."""
+
+    tool: int
+    shapes: list[AnyShape] = field(default_factory=list)
+
+    def __iter__(self) -> Iterator[AnyShape]:
+        return iter(self.shapes)
+
+    def __len__(self) -> int:
+        return len(self.shapes)
+
+    def sdf(self, x: np.ndarray, y: np.ndarray) -> np.ndarray:
+        """Minimum of the shapes' signed distances: exact outside the union,
+        and inside it a lower bound of the depth (see raster.py)."""
+        x = np.asarray(x, dtype=float)
+        y = np.asarray(y, dtype=float)
+        out = np.full(np.broadcast(x, y).shape, np.inf)
+        for s in self.shapes:
+            np.minimum(out, s.sdf(x, y), out=out)
+        return out
+
+    def contains(self, x: np.ndarray, y: np.ndarray, offset: float = 0.0) -> np.ndarray:
+        """Inside the layer grown by ``offset`` units (negative = shrunk,
+        per shape)."""
+        return self.sdf(x, y) <= offset
+
+    def bbox(self) -> Box | None:
+        """Union bounding box in units, or None if empty."""
+        if not self.shapes:
+            return None
+        boxes = [s.bbox() for s in self.shapes]
+        return (min(b[0] for b in boxes), max(b[1] for b in boxes),
+                min(b[2] for b in boxes), max(b[3] for b in boxes))
+
+
+# ---------------------------------------------------------------------------
+# Deck items.
+# ---------------------------------------------------------------------------
+@dataclass(frozen=True)
+class Pad:
+    """One D card: N pads of W (x H) at (x + i*sx, y + i*sy)."""
+
+    card: int
+    x: int
+    y: int
+    w: int
+    h: int | None
+    n: int
+    sx: int
+    sy: int
+
+    @property
+    def size(self) -> int:
+        return max(self.w, self.h or 0)
+
+    def centres(self) -> list[tuple[int, int]]:
+        return [(self.x + i * self.sx, self.y + i * self.sy) for i in range(self.n)]
+
+
+@dataclass(frozen=True)
+class Conductor:
+    """An L card and its + cards."""
+
+    card: int
+    w: int
+    points: tuple[tuple[int, int], ...]
+
+
+@dataclass(frozen=True)
+class Circle:
+    """An O card; ``clockwise`` is the + direction."""
+
+    card: int
+    clockwise: bool
+    x: int
+    y: int
+    r: int
+
+
+@dataclass(frozen=True)
+class ArcCard:
+    """An A card; ``clockwise`` is the + direction."""
+
+    card: int
+    clockwise: bool
+    xc: int
+    yc: int
+    xs: int
+    ys: int
+    xe: int
+    ye: int
+
+
+@dataclass
+class Package:
+    """One data package of a deck, with its ideal layers.
+
+    ``start_mm``: the start point's place on the field (X0, Y0) in mm;
+    ``tools``: (w1, w2, w3) and ``dmax`` in units; ``scale``: (N, D);
+    ``code``: "8" or "K"; ``order``: "O" or "D"; ``layers``: 'small',
+    'large', 'cond'; ``m_frames``: the M frames per layer key.
+    """
+
+    name: str
+    start_mm: tuple[Decimal, Decimal]
+    tools: tuple[int, int, int]
+    dmax: int
+    scale: tuple[int, int]
+    code: str
+    order: str
+    layers: dict[str, Layer]
+    m_frames: dict[str, list[Frame]] = field(default_factory=dict)
+    pads: list[Pad] = field(default_factory=list)
+    conductors: list[Conductor] = field(default_factory=list)
+    circles: list[Circle] = field(default_factory=list)
+    arcs: list[ArcCard] = field(default_factory=list)
+    first_card: int = 0
+
+    @property
+    def start(self) -> tuple[int, int]:
+        """(X0, Y0) in units."""
+        return int(self.start_mm[0] * 100), int(self.start_mm[1] * 100)
+
+    @property
+    def file_name(self) -> str:
+        """The package name as TENZOR's output files spell it."""
+        return sanitise(self.name)
+
+
+def sanitise(name: str) -> str:
+    """SPEC 4: letters, digits, '-' and '_' kept, anything else becomes '_'
+    (leading and trailing blanks of the name card dropped first)."""
+    return re.sub(r"[^A-Za-z0-9_-]", "_", name.strip())
+
+
+# ---------------------------------------------------------------------------
+# Fields.
+# ---------------------------------------------------------------------------
+class CardError(ValueError):
+    """A card the strict parser does not understand."""
+
+    def __init__(self, card: int, message: str) -> None:
+        super().__init__(f"card {card}: {message}")
+        self.card = card
+
+
+_REAL = re.compile(r"^ *([+-]?)(\d*)(\.?)(\d*) *$")
+_INT = re.compile(r"^ *([+-]?\d+)$")
+
+
+def _cols(card: str, a: int, b: int) -> str:
+    """Columns a..b (1-based, inclusive) of a card padded to 80."""
+    return card.ljust(80)[a - 1:b]
+
+
+def real(card: str, a: int, b: int, no: int, default: int | None = 0) -> int | None:
+    """Fw.2 field in columns a..b -> units; blank -> ``default``.
+
+    Without a decimal point the value has two implied decimals and must be
+    right-justified (trailing blanks would mean different values under
+    Fortran's BN and BZ modes).  More than two decimals must be zeros.
+    """
+    text = _cols(card, a, b)
+    if not text.strip():
+        return default
+    m = _REAL.match(text)
+    if not m or not (m.group(2) or m.group(4)):
+        raise CardError(no, f"columns {a}-{b}: not a number: {text!r}")
+    sign, whole, point, frac = m.groups()
+    if not point:
+        if text.rstrip() != text:
+            raise CardError(no, f"columns {a}-{b}: a number without a point must "
+                                f"be right-justified: {text!r}")
+        value = int(whole + frac)
+    else:
+        if frac[2:].strip("0"):
+            raise CardError(no, f"columns {a}-{b}: more than two decimals: {text!r}")
+        value = int(whole or "0") * 100 + int((frac + "00")[:2])
+    return -value if sign == "-" else value
+
+
+def integer(card: str, a: int, b: int, no: int, default: int | None = None) -> int | None:
+    """Iw field in columns a..b (right-justified); blank -> ``default``."""
+    text = _cols(card, a, b)
+    if not text.strip():
+        return default
+    if not _INT.match(text):
+        raise CardError(no, f"columns {a}-{b}: not a right-justified integer: {text!r}")
+    return int(text)
+
+
+def _blank(card: str, cols: Sequence[tuple[int, int]], no: int) -> None:
+    for a, b in cols:
+        if _cols(card, a, b).strip():
+            raise CardError(no, f"columns {a}-{b} must be blank: {_cols(card, a, b)!r}")
+
+
+def _need(value: int | None, no: int, what: str) -> int:
+    if value is None:
+        raise CardError(no, f"{what} is required")
+    return value
+
+
+# ---------------------------------------------------------------------------
+# The deck.
+# ---------------------------------------------------------------------------
+_CONTROL = ("NAME", "TIME", "PASS", "TAPE", "PERSO", "MAIN", "NO LOAD LIST",
+            "CALL FICMEMORY", "EXECUTE", "END FILE")
+
+
+def _control(card: str, no: int) -> str:
+    """The keyword of a job control card (``*`` or ``#``, ``_`` = blank);
+    the keyword ends at any character other than a letter or digit
+    (``*TIME:00.05``)."""
+    text = card[1:].replace("_", " ").upper().strip()
+    for key in _CONTROL:
+        if text == key or (text.startswith(key) and not text[len(key)].isalnum()):
+            if key == "MAIN" and text.split()[1:2] != ["TENZOR"]:
+                raise CardError(no, f"*MAIN names another program: {card!r}")
+            return key
+    raise CardError(no, f"unknown control card {card!r}")
+
+
+def _cards(text: str) -> Iterator[tuple[int, str]]:
+    """(number, card columns 1-72) for each non-blank data card, envelope
+    removed; *END FILE (or the end of the text) ends the data."""
+    lines = text.split("\n")
+    if lines and lines[-1] == "":
+        lines.pop()
+    in_envelope = None
+    for no, raw in enumerate(lines, 1):
+        line = raw[:-1] if raw.endswith("\r") else raw
+        if len(line) > 80:
+            raise CardError(no, f"longer than 80 columns ({len(line)})")
+        bad = [c for c in line if not " " <= c <= "~"]
+        if bad:
+            raise CardError(no, f"column {line.index(bad[0]) + 1}: byte {bad[0]!r}")
+        card = line[:72].rstrip()
+        if not card:
+            continue
+        if card[0] in "*#":
+            key = _control(card, no)
+            if key == "END FILE":
+                return
+            if in_envelope is None:
+                in_envelope = True
+            if not in_envelope:
+                raise CardError(no, f"control card among the data: {card!r}")
+            if key == "EXECUTE":
+                in_envelope = False
+            continue
+        if in_envelope:
+            raise CardError(no, f"data card before *EXECUTE: {card!r}")
+        in_envelope = False
+        yield no, card
+
+
+class _Builder:
+    """Collects one package's cards."""
+
+    def __init__(self, name: str, no: int) -> None:
+        self.name = name
+        self.first = no
+        self.p_seen = False
+        self.geometry = False
+        self.x0 = self.y0 = 0
+        self.w1, self.w2, self.w3 = 50, 100, 50
+        self.dmax = 200
+        self.scale = (1, 1)
+        self.code = "8"
+        self.order = "O"
+        self.pads: list[Pad] = []
+        self.conductors: list[Conductor] = []
+        self.circles: list[Circle] = []
+        self.arcs: list[ArcCard] = []
+        self.m: dict[str, list[tuple[int, Frame]]] = {k: [] for k in LAYERS}
+        self.open: tuple[int, int, list[tuple[int, int]]] | None = None  # card, W, pts
+
+    def close(self) -> None:
+        if self.open is None:
+            return
+        no, w, pts = self.open
+        self.open = None
+        if len(set(pts)) < 2:
+            raise CardError(no, "conductor of zero length")
+        self.conductors.append(Conductor(no, w, tuple(pts)))
+
+    def card(self, no: int, c: str) -> None:
+        kind = c[0]
+        if kind != "+":
+            self.close()
+        if kind == "P":
+            self.p_card(no, c)
+            return
+        if kind in "DLOA":
+            self.geometry = True
+        handler = {"D": self.d_card, "L": self.l_card, "+": self.plus_card,
+                   "O": self.o_card, "A": self.a_card, "M": self.m_card}.get(kind)
+        if handler is None:
+            raise CardError(no, f"unknown card type {kind!r} in column 1")
+        handler(no, c)
+
+    def p_card(self, no: int, c: str) -> None:
+        if self.p_seen or self.geometry or any(self.m.values()):
+            raise CardError(no, "P card must be the only one, before the geometry")
+        self.p_seen = True
+        _blank(c, [(2, 10), (69, 69), (72, 72)], no)
+        self.x0 = real(c, 11, 20, no)
+        self.y0 = real(c, 21, 30, no)
+        self.w1 = real(c, 31, 38, no, 50)
+        self.w2 = real(c, 39, 46, no, 100)
+        self.w3 = real(c, 47, 54, no, 50)
+        self.dmax = real(c, 55, 62, no, 200)
+        self.scale = (integer(c, 63, 65, no, 1), integer(c, 66, 68, no, 1))
+        code = _cols(c, 70, 70)
+        order = _cols(c, 71, 71)
+        if code not in " 8K" or order not in " OD":
+            raise CardError(no, f"column 70 code {code!r} / column 71 order {order!r}")
+        self.code = "K" if code == "K" else "8"
+        self.order = "D" if order == "D" else "O"
+        for v, what in ((self.w1, "w1"), (self.w2, "w2"), (self.w3, "w3"),
+                        (self.dmax, "Dmax"), (self.scale[0], "scale N"),
+                        (self.scale[1], "scale D")):
+            if v <= 0:
+                raise CardError(no, f"{what} must be positive")
+
+    def d_card(self, no: int, c: str) -> None:
+        _blank(c, [(2, 10), (71, 72)], no)
+        w = _need(real(c, 31, 38, no, None), no, "pad W")
+        h = real(c, 39, 46, no, None)
+        n = integer(c, 47, 50, no, 1)
+        if w <= 0 or (h is not None and h <= 0) or n < 1:
+            raise CardError(no, "pad W, H and N must be positive")
+        self.pads.append(Pad(no, real(c, 11, 20, no), real(c, 21, 30, no), w, h, n,
+                             real(c, 51, 60, no), real(c, 61, 70, no)))
+
+    def l_card(self, no: int, c: str) -> None:
+        _blank(c, [(2, 10), (39, 72)], no)
+        w = real(c, 31, 38, no, None)
+        w = self.w3 if w is None else w
+        if w < self.w3:
+            raise CardError(no, "conductor narrower than its tool")
+        self.open = (no, w, [(real(c, 11, 20, no), real(c, 21, 30, no))])
+
+    def plus_card(self, no: int, c: str) -> None:
+        _blank(c, [(2, 10), (31, 72)], no)
+        if self.open is None:
+            raise CardError(no, "+ card with no conductor open")
+        self.open[2].append((real(c, 11, 20, no), real(c, 21, 30, no)))
+
+    def _direction(self, no: int, c: str) -> bool:
+        d = _cols(c, 2, 2)
+        if d not in "+-":
+            raise CardError(no, f"column 2 must be + or -, not {d!r}")
+        return d == "+"
+
+    def o_card(self, no: int, c: str) -> None:
+        _blank(c, [(3, 10), (41, 72)], no)
+        cw = self._direction(no, c)
+        r = _need(real(c, 31, 40, no, None), no, "radius")
+        if r <= 0:
+            raise CardError(no, "radius must be positive")
+        self.circles.append(Circle(no, cw, real(c, 11, 20, no), real(c, 21, 30, no), r))
+
+    def a_card(self, no: int, c: str) -> None:
+        _blank(c, [(3, 10), (71, 72)], no)
+        cw = self._direction(no, c)
+        v = [real(c, a, a + 9, no) for a in (11, 21, 31, 41, 51, 61)]
+        arc = ArcCard(no, cw, *v)
+        rs = math.hypot(arc.xs - arc.xc, arc.ys - arc.yc)
+        re_ = math.hypot(arc.xe - arc.xc, arc.ye - arc.yc)
+        if rs == 0 or abs(rs - re_) > 1:
+            raise CardError(no, f"arc start and end not on one circle ({rs:.2f}, {re_:.2f})")
+        self.arcs.append(arc)
+
+    def m_card(self, no: int, c: str) -> None:
+        _blank(c, [(3, 10), (61, 72)], no)
+        tape = _cols(c, 2, 2)
+        if tape not in M_TAPES:
+            raise CardError(no, f"column 2 tape must be S, B, L or blank, not {tape!r}")
+        vals = [real(c, a, a + 9, no) for a in (11, 21, 31, 41)]
+        cyc = integer(c, 51, 55, no, 0)
+        k = _need(integer(c, 56, 60, no, None), no, "K")
+        frame = Frame(*vals, cyc=cyc, k=k)
+        self.m[M_TAPES[tape]].append((no, frame))
+
+    def package(self) -> Package:
+        self.close()
+        tools = {"small": self.w1, "large": self.w2, "cond": self.w3}
+        layers = {k: Layer(tools[k]) for k in LAYERS}
+        m_frames: dict[str, list[Frame]] = {}
+        for key in LAYERS:
+            frames = [f for _, f in self.m[key]]
+            m_frames[key] = frames
+            problem = sequence_problem(frames)
+            if problem is not None:
+                raise CardError(self.m[key][problem[0]][0], f"M frame: {problem[1]}")
+            try:
+                run = sim.simulate(frames)
+            except ValueError as exc:
+                no = self.m[key][0][0] if frames else self.first
+                raise CardError(no, f"M frames of tape {key}: {exc}") from None
+            layers[key].shapes.extend(run_shapes(run, tools[key]))
+        for pad in self.pads:
+            key = "small" if pad.size <= self.dmax else "large"
+            tool = tools[key]
+            if min(pad.w, pad.h or pad.w) < tool:
+                raise CardError(pad.card, "pad smaller than its tool")
+            for cx, cy in pad.centres():
+                if pad.h is None:
+                    shape: AnyShape = Disc(cx, cy, pad.w / 2)
+                else:
+                    shape = RoundRect(cx, cy, pad.w, pad.h, tool / 2)
+                layers[key].shapes.append(shape)
+        cond = layers["cond"].shapes
+        for con in self.conductors:
+            cond.append(Stroke(tuple((float(x), float(y)) for x, y in con.points),
+                               con.w / 2))
+        hw = self.w3 / 2
+        for o in self.circles:
+            cond.append(ArcBand(o.x, o.y, o.r, 0.0, -TWO_PI if o.clockwise else TWO_PI, hw))
+        for a in self.arcs:
+            sx, sy = a.xs - a.xc, a.ys - a.yc
+            sweep = sim.arc_sweep(sx, sy, a.xe - a.xc, a.ye - a.yc, a.clockwise)
+            cond.append(ArcBand(a.xc, a.yc, math.hypot(sx, sy), math.atan2(sy, sx),
+                                sweep, hw))
+        return Package(
+            name=self.name,
+            start_mm=(Decimal(self.x0) / 100, Decimal(self.y0) / 100),
+            tools=(self.w1, self.w2, self.w3), dmax=self.dmax, scale=self.scale,
+            code=self.code, order=self.order, layers=layers, m_frames=m_frames,
+            pads=self.pads, conductors=self.conductors, circles=self.circles,
+            arcs=self.arcs, first_card=self.first)
+
+
+def parse_deck(text: str) -> list[Package]:
+    """Parse a valid deck into its packages (see the module doc).
+
+    Raises :class:`CardError` (a ValueError) with the card number on
+    anything it does not understand, including a deck without the final E.
+    """
+    packages: list[Package] = []
+    builder: _Builder | None = None
+    state = "name"            # "name": expecting a name card; "data"; "done" after E
+    for no, card in _cards(text):
+        if state == "done":
+            raise CardError(no, f"card after the final E: {card!r}")
+        if state == "name":
+            builder = _Builder(card[:18].rstrip(), no)
+            if not builder.name.strip():
+                raise CardError(no, "blank package name")
+            _blank(card, [(19, 72)], no)
+            state = "data"
+            continue
+        assert builder is not None
+        if card[0] in "CE":
+            packages.append(builder.package())
+            state = "name" if card[0] == "C" else "done"
+            builder = None
+            continue
+        builder.card(no, card)
+    if state != "done":
+        raise CardError(0, "the deck does not end with an E card")
+    return packages
