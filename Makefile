@@ -14,8 +14,9 @@ setup:
 build: setup
 	@fpm build >/dev/null
 
+# The built program is run directly: `fpm run` would add its own progress lines.
 demo: build
-	@fpm run tenzor -- $(DECK) -o $(OUT) 2>&1 | grep -v '^\[\|^Project\|^ *$$' ; exit $${PIPESTATUS[0]}
+	@"$$(fpm run --runner echo tenzor 2>/dev/null | tail -n 1)" $(DECK) -o $(OUT)
 
 test: build
 	fpm test
