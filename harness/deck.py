@@ -21,6 +21,10 @@ negative inside, and a ``bbox()``):
   or arc;
 * M frames: their own drawing, simulated by :mod:`harness.sim` from the
   start point with the tool of their tape (see :func:`run_shapes`).
+
+Every shape of a layer has an :class:`Origin` (``Layer.origins``, parallel to
+``Layer.shapes``): the card that asks for it, so that a checker can name the
+card of a shape that is drawn wrong.
 """
 
 from __future__ import annotations
@@ -180,12 +184,38 @@ def run_shapes(run: sim.Run, tool: float) -> list[AnyShape]:
     return [stroke_shape(s, tool) for s in run.strokes]
 
 
+@dataclass(frozen=True)
+class Origin:
+    """Where an ideal shape comes from: the 1-based ``card`` (line) number,
+    its type ``kind`` ('D', 'L', 'O', 'A' or 'M') and ``item``: for a D card
+    the pad's place in its row of ``count`` pads (0-based), for an M card
+    the frame's index on its tape (0-based), else 0."""
+
+    card: int
+    kind: str
+    item: int = 0
+    count: int = 1
+
+
 @dataclass
 class Layer:
-    """An ideal layer: a union of shapes, drawn with ``tool`` (units)."""
+    """An ideal layer: a union of shapes, drawn with ``tool`` (units).
+
+    ``origins`` is parallel to ``shapes`` when the layer comes from a deck
+    (:func:`parse_deck`); a layer built by hand may leave it empty."""
 
     tool: int
     shapes: list[AnyShape] = field(default_factory=list)
+    origins: list[Origin] = field(default_factory=list)
+
+    def add(self, shape: AnyShape, origin: Origin) -> None:
+        """Append a shape with the card it comes from."""
+        self.shapes.append(shape)
+        self.origins.append(origin)
+
+    def origin(self, index: int) -> Origin | None:
+        """The origin of shape ``index``, or None if the layer has none."""
+        return self.origins[index] if len(self.origins) == len(self.shapes) else None
 
     def __iter__(self) -> Iterator[AnyShape]:
         return iter(self.shapes)
@@ -282,7 +312,8 @@ class Package:
     ``start_mm``: the start point's place on the field (X0, Y0) in mm;
     ``tools``: (w1, w2, w3) and ``dmax`` in units; ``scale``: (N, D);
     ``code``: "8" or "K"; ``order``: "O" or "D"; ``layers``: 'small',
-    'large', 'cond'; ``m_frames``: the M frames per layer key.
+    'large', 'cond'; ``m_frames``: the M frames per layer key, and
+    ``m_cards`` the card number of each.
     """
 
     name: str
@@ -294,6 +325,7 @@ class Package:
     order: str
     layers: dict[str, Layer]
     m_frames: dict[str, list[Frame]] = field(default_factory=dict)
+    m_cards: dict[str, list[int]] = field(default_factory=dict)
     pads: list[Pad] = field(default_factory=list)
     conductors: list[Conductor] = field(default_factory=list)
     circles: list[Circle] = field(default_factory=list)
@@ -573,9 +605,11 @@ class _Builder:
         tools = {"small": self.w1, "large": self.w2, "cond": self.w3}
         layers = {k: Layer(tools[k]) for k in LAYERS}
         m_frames: dict[str, list[Frame]] = {}
+        m_cards: dict[str, list[int]] = {}
         for key in LAYERS:
             frames = [f for _, f in self.m[key]]
             m_frames[key] = frames
+            m_cards[key] = [no for no, _ in self.m[key]]
             problem = sequence_problem(frames)
             if problem is not None:
                 raise CardError(self.m[key][problem[0]][0], f"M frame: {problem[1]}")
@@ -584,35 +618,38 @@ class _Builder:
             except ValueError as exc:
                 no = self.m[key][0][0] if frames else self.first
                 raise CardError(no, f"M frames of tape {key}: {exc}") from None
-            layers[key].shapes.extend(run_shapes(run, tools[key]))
+            for shape, i in zip(run_shapes(run, tools[key]), sim.stroke_frames(frames)):
+                layers[key].add(shape, Origin(self.m[key][i][0], "M", i))
         for pad in self.pads:
             key = "small" if pad.size <= self.dmax else "large"
             tool = tools[key]
             if min(pad.w, pad.h or pad.w) < tool:
                 raise CardError(pad.card, "pad smaller than its tool")
-            for cx, cy in pad.centres():
+            for i, (cx, cy) in enumerate(pad.centres()):
                 if pad.h is None:
                     shape: AnyShape = Disc(cx, cy, pad.w / 2)
                 else:
                     shape = RoundRect(cx, cy, pad.w, pad.h, tool / 2)
-                layers[key].shapes.append(shape)
-        cond = layers["cond"].shapes
+                layers[key].add(shape, Origin(pad.card, "D", i, pad.n))
+        cond = layers["cond"]
         for con in self.conductors:
-            cond.append(Stroke(tuple((float(x), float(y)) for x, y in con.points),
-                               con.w / 2))
+            cond.add(Stroke(tuple((float(x), float(y)) for x, y in con.points),
+                            con.w / 2), Origin(con.card, "L"))
         hw = self.w3 / 2
         for o in self.circles:
-            cond.append(ArcBand(o.x, o.y, o.r, 0.0, -TWO_PI if o.clockwise else TWO_PI, hw))
+            cond.add(ArcBand(o.x, o.y, o.r, 0.0, -TWO_PI if o.clockwise else TWO_PI, hw),
+                     Origin(o.card, "O"))
         for a in self.arcs:
             sx, sy = a.xs - a.xc, a.ys - a.yc
             sweep = sim.arc_sweep(sx, sy, a.xe - a.xc, a.ye - a.yc, a.clockwise)
-            cond.append(ArcBand(a.xc, a.yc, math.hypot(sx, sy), math.atan2(sy, sx),
-                                sweep, hw))
+            cond.add(ArcBand(a.xc, a.yc, math.hypot(sx, sy), math.atan2(sy, sx),
+                             sweep, hw), Origin(a.card, "A"))
         return Package(
             name=self.name,
             start_mm=(Decimal(self.x0) / 100, Decimal(self.y0) / 100),
             tools=(self.w1, self.w2, self.w3), dmax=self.dmax, scale=self.scale,
             code=self.code, order=self.order, layers=layers, m_frames=m_frames,
+            m_cards=m_cards,
             pads=self.pads, conductors=self.conductors, circles=self.circles,
             arcs=self.arcs, first_card=self.first)
 

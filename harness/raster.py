@@ -119,6 +119,25 @@ def min_sdf(shapes: Sequence[AnyShape], grid: Grid, pad: float) -> np.ndarray:
     return out
 
 
+def argmin_sdf(shapes: Sequence[AnyShape], ids: Sequence[int], grid: Grid,
+               pad: float) -> tuple[np.ndarray, np.ndarray]:
+    """Like :func:`min_sdf` over ``shapes[i] for i in ids``, and which one
+    gives the minimum at each pixel (its id; -1 where none reaches; the
+    first in ``ids`` order on ties)."""
+    out = np.full((grid.ny, grid.nx), np.inf)
+    which = np.full((grid.ny, grid.nx), -1, dtype=np.int64)
+    for n in ids:
+        win = grid.window(shapes[n].bbox(), pad)
+        if win is None:
+            continue
+        x, y = grid.centres(*win)
+        d = shapes[n].sdf(x, y)
+        better = d < out[win]
+        out[win] = np.where(better, d, out[win])
+        which[win] = np.where(better, n, which[win])
+    return out, which
+
+
 def render_run(run: Run, tool: float, grid: Grid) -> np.ndarray:
     """Boolean raster of what ``run`` draws with a round tool of diameter
     ``tool`` (units)."""
@@ -214,6 +233,63 @@ def _spread(cands: list[tuple[float, ...]], k: int,
     return out
 
 
+@dataclass
+class Plan:
+    """The tiles :func:`compare` evaluates: ``shapes`` is the ideal shapes
+    then the drawn ones (``n_ideal`` of the first kind); ``tiles`` maps
+    (tile row, tile column) to the indices into ``shapes`` that may reach
+    the tile; ideal shapes are evaluated with window margin ``pad``, drawn
+    ones with ``pitch``."""
+
+    grid: Grid
+    pitch: float
+    pad: float
+    shapes: list[AnyShape]
+    n_ideal: int
+    tiles: dict[tuple[int, int], list[int]]
+    pixels: int
+
+    def tile(self, tj: int, ti: int) -> Grid:
+        """The grid of one tile."""
+        js = slice(tj * TILE, min(self.grid.ny, (tj + 1) * TILE))
+        is_ = slice(ti * TILE, min(self.grid.nx, (ti + 1) * TILE))
+        return self.grid.sub(js, is_)
+
+
+def plan(ideal: Sequence[AnyShape], drawn: Sequence[AnyShape], tol: float,
+         pitch: float | None = None, max_pixels: int = MAX_PIXELS,
+         reach: float = 0.0) -> Plan | None:
+    """Choose the pitch (the first of :data:`PITCHES` below ``tol`` that
+    keeps the evaluated pixels within ``max_pixels``) and the tiles for
+    comparing ``drawn`` with ``ideal`` at tolerance ``tol``; None when both
+    are empty.  ValueError when no pitch is small enough.  Ideal shapes are
+    evaluated up to ``tol`` + pitch + ``reach`` outside themselves (more
+    ``reach`` tells how far excess lies from the nearest shape)."""
+    if pitch is not None:
+        candidates: tuple[float, ...] = (pitch,)
+    else:
+        candidates = tuple(p for p in PITCHES if p < tol) or (tol / 2,)
+    if any(p >= tol for p in candidates):
+        raise ValueError(f"pitch {candidates[0]} must be smaller than tolerance {tol}")
+    box = union_box([s.bbox() for s in ideal] + [s.bbox() for s in drawn])
+    if box is None:
+        return None
+    for p in candidates:
+        grid = make_grid(box, p, tol + 2 * p, max_pixels=10**15)
+        pad = tol + p + reach
+        tiles: dict[tuple[int, int], list[int]] = {}
+        _tiles(grid, ideal, pad, tiles, 0)
+        _tiles(grid, drawn, p, tiles, len(ideal))
+        pixels = sum((min(grid.nx, (ti + 1) * TILE) - ti * TILE)
+                     * (min(grid.ny, (tj + 1) * TILE) - tj * TILE) for tj, ti in tiles)
+        if pixels <= max_pixels:
+            break
+    else:
+        raise ValueError(f"coverage check needs about {pixels} pixels even at "
+                         f"{candidates[-1] / 100:.2f} mm pitch (limit {max_pixels})")
+    return Plan(grid, p, pad, list(ideal) + list(drawn), len(ideal), tiles, pixels)
+
+
 def compare(run: Run, tool: float, layer: Layer | Sequence[AnyShape], tol: float = 5,
             pitch: float | None = None, max_pixels: int = MAX_PIXELS,
             examples: int = 5) -> Report:
@@ -225,37 +301,17 @@ def compare(run: Run, tool: float, layer: Layer | Sequence[AnyShape], tol: float
     """
     ideal = layer.shapes if isinstance(layer, Layer) else list(layer)
     drawn = run_shapes(run, tool)
-    if pitch is not None:
-        candidates: tuple[float, ...] = (pitch,)
-    else:
-        candidates = tuple(p for p in PITCHES if p < tol) or (tol / 2,)
-    if any(p >= tol for p in candidates):
-        raise ValueError(f"pitch {candidates[0]} must be smaller than tolerance {tol}")
-    box = union_box([s.bbox() for s in ideal] + [s.bbox() for s in drawn])
-    if box is None:
-        return Report(tol / 100, candidates[0] / 100, 0, 0, 0, 0)
-    for p in candidates:
-        grid = make_grid(box, p, tol + 2 * p, max_pixels=10**15)
-        pad = tol + p
-        tiles: dict[tuple[int, int], list[int]] = {}
-        _tiles(grid, ideal, pad, tiles, 0)
-        _tiles(grid, drawn, p, tiles, len(ideal))
-        pixels = sum((min(grid.nx, (ti + 1) * TILE) - ti * TILE)
-                     * (min(grid.ny, (tj + 1) * TILE) - tj * TILE) for tj, ti in tiles)
-        if pixels <= max_pixels:
-            break
-    else:
-        raise ValueError(f"coverage check needs about {pixels} pixels even at "
-                         f"{candidates[-1] / 100:.2f} mm pitch (limit {max_pixels})")
-    shapes = list(ideal) + list(drawn)
-    n_ideal = len(ideal)
+    pl = plan(ideal, drawn, tol, pitch, max_pixels)
+    if pl is None:
+        p = pitch if pitch is not None else (
+            next((q for q in PITCHES if q < tol), tol / 2))
+        return Report(tol / 100, p / 100, 0, 0, 0, 0)
+    p, pad, shapes, n_ideal, tiles = pl.pitch, pl.pad, pl.shapes, pl.n_ideal, pl.tiles
     counted = n_drawn = n_holes = n_excess = 0
     hole_c: list[tuple[float, ...]] = []
     exc_pts: list[tuple[float, float]] = []
     for (tj, ti) in sorted(tiles):
-        js = slice(tj * TILE, min(grid.ny, (tj + 1) * TILE))
-        is_ = slice(ti * TILE, min(grid.nx, (ti + 1) * TILE))
-        tile = grid.sub(js, is_)
+        tile = pl.tile(tj, ti)
         counted += tile.pixels
         members = tiles[(tj, ti)]
         ideal_d = min_sdf([shapes[n] for n in members if n < n_ideal], tile, pad)

@@ -206,6 +206,28 @@ def unroll(frames: Sequence[FrameLike]) -> Iterator[FrameLike]:
             i += 1
 
 
+def executed_frames(frames: Sequence[FrameLike]) -> Iterator[int]:
+    """The 0-based index on the tape of each frame :func:`unroll` yields,
+    in the same order (no checks: call it on frames that simulate)."""
+    i = 0
+    while i < len(frames):
+        n = frames[i].cyc
+        if n and i + 1 < len(frames):
+            for _ in range(n):
+                yield i
+                yield i + 1
+            i += 2
+        else:
+            yield i
+            i += 1
+
+
+def stroke_frames(frames: Sequence[FrameLike]) -> list[int]:
+    """The 0-based tape index of the frame that draws each stroke of
+    ``simulate(frames).strokes`` (every executed frame but K20 draws one)."""
+    return [i for i in executed_frames(frames) if frames[i].k != 20]
+
+
 def simulate(frames: Sequence[FrameLike]) -> Run:
     """Run the frames from (0, 0) with the tool raised; see the module doc.
 
