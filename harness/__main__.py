@@ -13,7 +13,7 @@ import sys
 from collections.abc import Callable, Sequence
 from pathlib import Path
 
-from . import f77check, tape
+from . import f77check, tape, verify
 
 
 def _write(text: str, stream=None) -> None:
@@ -69,10 +69,33 @@ def _add_f77check(sub: argparse._SubParsersAction) -> None:
     p.set_defaults(func=_run_f77check)
 
 
+def _run_verify(args: argparse.Namespace) -> int:
+    return verify.main(args.deck, args.tapedir, args.tolerance, args.code)
+
+
+def _add_verify(sub: argparse._SubParsersAction) -> None:
+    p = sub.add_parser("verify", help="check anyone's tapes against a deck",
+                       description="Check the tapes NAME-small.ptp, NAME-large.ptp and "
+                                   "NAME-cond.ptp of each package of DECK, found in "
+                                   "TAPEDIR, against the deck's geometry: decoding, "
+                                   "the return to the start point, the field, and the "
+                                   "drawing within the tolerance. Prints PASS, or FAIL "
+                                   "with each reason. Exit status: 0 PASS, 1 FAIL, "
+                                   "2 usage or I/O.")
+    p.add_argument("deck", metavar="DECK", help="the card deck (.crd)")
+    p.add_argument("tapedir", metavar="TAPEDIR", help="directory holding the tapes")
+    p.add_argument("--tolerance", default="0.05", metavar="MM",
+                   help="coverage tolerance in mm (default 0.05, the machine's accuracy)")
+    p.add_argument("--code", choices=("8", "K", "auto"), default="auto",
+                   help="require this code variant (default: detect it from each tape)")
+    p.set_defaults(func=_run_verify)
+
+
 #: name -> function adding the subcommand's parser.
 SUBCOMMANDS: dict[str, Callable[[argparse._SubParsersAction], None]] = {
     "decode": _add_decode,
     "f77check": _add_f77check,
+    "verify": _add_verify,
 }
 
 
