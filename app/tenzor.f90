@@ -59,7 +59,8 @@ program tenzor_shell
         call dev_load_deck(deck_path, ok, msg)
         if (.not. ok) call fail(deck_path // ': ' // msg)
     else
-        call dev_load_stdin()
+        call dev_load_stdin(ok, msg)
+        if (.not. ok) call fail('standard input: ' // msg)
     end if
     call dev_set_output(out_dir, ok)
     if (.not. ok) call fail('cannot create the output directory ' // out_dir)

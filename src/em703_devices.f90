@@ -7,10 +7,15 @@
 !> A package's output is held in memory until the package is closed; then it is
 !> written to temporary files and renamed into place, so a failed package never
 !> leaves a partial tape and never touches the good tapes of an earlier run.
+!> A write counts as done only when the file on disk has every byte (the
+!> Fortran run-time library does not report every failed write, e.g. a full
+!> disk).
+!>
+!> The deck is read byte for byte, whatever kind of file it is (a regular
+!> file, a pipe, a FIFO, standard input), so every way in reads the same cards.
 module em703_devices
-    use, intrinsic :: iso_fortran_env, only: error_unit, output_unit, input_unit, &
-        iostat_end, iostat_eor
-    use em703_os, only: make_dirs, rename_file, remove_file
+    use, intrinsic :: iso_fortran_env, only: error_unit, output_unit
+    use em703_os, only: make_dirs, rename_file, remove_file, is_dir, read_fd
     implicit none
     private
 
@@ -29,6 +34,8 @@ module em703_devices
 
     character(len=*), parameter :: nl = achar(10)
     character(len=*), parameter :: tape_suffix(3) = [character(len=6) :: 'small', 'large', 'cond']
+    !> The largest deck read, in bytes (1 GiB).
+    integer, parameter :: max_deck = 1073741824
 
     character(len=:), allocatable :: deck, deck_label, out_dir, pkg_name
     integer :: deck_pos = 1
@@ -63,7 +70,7 @@ contains
         character(len=*), intent(in) :: path
         logical, intent(out) :: ok
         character(len=:), allocatable, intent(out) :: msg
-        integer :: u, ios, nbytes
+        integer :: u, ios, istat
         character(len=256) :: iomsg
         ok = .false.
         deck_label = path
@@ -73,50 +80,36 @@ contains
             msg = 'cannot open the deck: ' // trim(iomsg)
             return
         end if
-        inquire(unit=u, size=nbytes)
-        if (nbytes < 0) then
-            msg = 'cannot tell the size of the deck (is it a regular file?)'
-            close(u)
-            return
-        end if
-        if (allocated(deck)) deallocate(deck)
-        allocate(character(len=nbytes) :: deck)
-        if (nbytes > 0) then
-            read(u, iostat=ios, iomsg=iomsg) deck
-            if (ios /= 0) then
-                msg = 'cannot read the deck (a directory?): ' // trim(iomsg)
-                close(u)
-                return
-            end if
-        end if
+        call read_fd(fnum(u), max_deck, deck, istat)
         close(u)
-        deck_pos = 1
-        ok = .true.
-        msg = ''
+        call load_status(istat, ok, msg)
     end subroutine dev_load_deck
 
-    !> Read the whole deck from standard input.
-    subroutine dev_load_stdin()
-        type(byte_buffer) :: buf
-        character(len=1024) :: chunk
-        integer :: ios, got
+    !> Read the whole deck from standard input (ok and msg as for dev_load_deck).
+    subroutine dev_load_stdin(ok, msg)
+        logical, intent(out) :: ok
+        character(len=:), allocatable, intent(out) :: msg
+        integer :: istat
         deck_label = '<stdin>'
-        do
-            read(input_unit, '(a)', advance='no', iostat=ios, size=got) chunk
-            if (got > 0) call buf%append(chunk(1:got))
-            if (ios == iostat_eor) then
-                call buf%append(nl)
-            else if (ios /= 0) then
-                exit
-            end if
-        end do
-        if (buf%n > 0) then
-            deck = buf%data(1:buf%n)
-        else
-            deck = ''
-        end if
-        deck_pos = 1
+        call read_fd(0, max_deck, deck, istat)
+        call load_status(istat, ok, msg)
     end subroutine dev_load_stdin
+
+    subroutine load_status(istat, ok, msg)
+        integer, intent(in) :: istat
+        logical, intent(out) :: ok
+        character(len=:), allocatable, intent(out) :: msg
+        character(len=12) :: nmax
+        ok = istat == 0
+        msg = ''
+        deck_pos = 1
+        if (istat == 1) msg = 'cannot read the deck (a directory?)'
+        if (istat == 2) then
+            write(nmax, '(i0)') max_deck
+            msg = 'the deck has more than ' // trim(nmax) // ' bytes; split the job'
+        end if
+        if (.not. ok) deck = ''
+    end subroutine load_status
 
     !> Choose (and create) the output directory.
     subroutine dev_set_output(dir, ok)
@@ -199,12 +192,14 @@ contains
 
     !> Close the package: the listing always, the tapes, texts and job sheet only
     !> when keep is true. Every file is written under a temporary name first; the
-    !> renames happen only when all of them were written.
+    !> renames happen only when all of them were written in full and none of the
+    !> final names is a directory. When a write fails, no file of the package is
+    !> changed, and the console says so.
     subroutine dev_close(keep)
         logical, intent(in) :: keep
         character(len=:), allocatable :: base
         character(len=4096) :: final(8)
-        integer :: nfiles, i
+        integer :: nfiles, i, j
         logical :: ok
         base = out_dir // '/' // pkg_name
         nfiles = 0
@@ -217,18 +212,36 @@ contains
             end do
             call stage(base // '.job', job, ok)
         end if
+        do i = 1, nfiles
+            if (ok .and. is_dir(trim(final(i)))) then
+                write(error_unit, '(a)') 'tenzor: cannot write ' // trim(final(i)) // &
+                    ': a directory has that name'
+                ok = .false.
+            end if
+        end do
         if (.not. ok) then
             do i = 1, nfiles
                 call remove_file(temp_name(trim(final(i))))
             end do
             io_failed = .true.
+            write(error_unit, '(a)') 'tenzor: ' // pkg_name // ': no file written; ' // &
+                'earlier files of this name are left as they were'
+            write(output_unit, '(a)') pkg_name // ': cannot write its files; earlier ' // &
+                'files of this name are left as they were'
             return
         end if
         do i = 1, nfiles
             call rename_file(temp_name(trim(final(i))), trim(final(i)), ok)
             if (.not. ok) then
-                write(error_unit, '(a)') 'tenzor: cannot rename into ' // trim(final(i))
+                write(error_unit, '(a)') 'tenzor: cannot rename into ' // trim(final(i)) // &
+                    '; ' // pkg_name // ': the files before it in the list are new, ' // &
+                    'the others are left as they were'
+                do j = i, nfiles
+                    call remove_file(temp_name(trim(final(j))))
+                end do
                 io_failed = .true.
+                write(output_unit, '(a)') pkg_name // ': cannot write all its files'
+                return
             end if
         end do
         if (keep) then
@@ -243,16 +256,25 @@ contains
             character(len=*), intent(in) :: path
             type(byte_buffer), intent(in) :: buf
             logical, intent(inout) :: ok
-            integer :: u, ios
+            integer :: u, ios, ios2, nbytes
             character(len=256) :: iomsg
             if (.not. ok) return
             nfiles = nfiles + 1
             final(nfiles) = path
+            iomsg = ''
             open(newunit=u, file=temp_name(path), access='stream', form='unformatted', &
                  status='replace', action='write', iostat=ios, iomsg=iomsg)
             if (ios == 0) then
                 if (buf%n > 0) write(u, iostat=ios, iomsg=iomsg) buf%data(1:buf%n)
-                close(u)
+                close(u, iostat=ios2)
+                if (ios == 0) ios = ios2
+                if (ios == 0) then
+                    inquire(file=temp_name(path), size=nbytes)
+                    if (nbytes /= buf%n) then
+                        ios = -1
+                        iomsg = 'the file on disk is short (is the disk full?)'
+                    end if
+                end if
             end if
             if (ios /= 0) then
                 write(error_unit, '(a)') 'tenzor: cannot write ' // path // ': ' // trim(iomsg)

@@ -190,3 +190,61 @@ def test_failed_package_leaves_earlier_good_tapes_untouched(run_tenzor, tmp_path
     assert (out / "BAD-cond.ptp").read_bytes() == before
     assert tape.decode(before).frames[0] == tape.Frame(dx=100, k=10)
     assert "EARLIER TAPES OF THIS NAME, IF ANY, ARE LEFT AS THEY WERE" in (out / "BAD.lst").read_text()
+
+
+def _snapshot(out):
+    return {p.name: (p.read_bytes() if p.is_file() else None) for p in sorted(out.iterdir())}
+
+
+@pytest.mark.skipif(not __import__("os").path.exists("/dev/full"), reason="no /dev/full")
+def test_disk_full_mid_package_leaves_earlier_files_untouched(run_tenzor, tmp_path):
+    """A write that fails after some files of the package were written (the
+    small-pad tape's temporary file leads to /dev/full: every write fails
+    with ENOSPC, which the Fortran run-time library does not report): no
+    file of the package changes, no temporary file is left, and both
+    standard error and standard output say so."""
+    out = tmp_path / "keep"
+    good = "BAD\n" + P + "\n" + card(c1="M", c31=f10("1.00"), c56="   10") + "\nE\n"
+    assert run_tenzor(good, out=out)[0].returncode == 0
+    before = _snapshot(out)
+    (out / ".BAD-small.ptp.tmp").symlink_to("/dev/full")
+    proc, _ = run_tenzor(good.replace("1.00", "2.00"), out=out)
+    assert proc.returncode == 2
+    err = proc.stderr.decode()
+    assert "tenzor: cannot write " in err and "BAD-small.ptp: the file on disk is short" in err
+    assert "BAD: no file written; earlier files of this name are left as they were" in err
+    assert "BAD: cannot write its files; earlier files of this name are left as they were" \
+        in proc.stdout.decode()
+    assert _snapshot(out) == before, "a file of the failed package changed"
+    assert "Fortran runtime" not in err
+
+
+def test_directory_in_the_way_leaves_earlier_files_untouched(run_tenzor, tmp_path):
+    """A directory under the name of one of the package's files: nothing of the
+    package is renamed into place (the listing neither), and the directory
+    is left alone."""
+    out = tmp_path / "keep"
+    good = "BAD\n" + P + "\n" + card(c1="M", c31=f10("1.00"), c56="   10") + "\nE\n"
+    assert run_tenzor(good, out=out)[0].returncode == 0
+    (out / "BAD.job").unlink()
+    (out / "BAD.job").mkdir()
+    (out / "BAD.job" / "inside").write_text("x")
+    before = _snapshot(out)
+    proc, _ = run_tenzor(good.replace("1.00", "2.00"), out=out)
+    assert proc.returncode == 2
+    assert "BAD.job: a directory has that name" in proc.stderr.decode()
+    assert _snapshot(out) == before
+    assert (out / "BAD.job" / "inside").read_text() == "x"
+    assert not list(out.glob(".*.tmp"))
+
+
+def test_a_good_package_after_a_failed_write_is_still_punched(run_tenzor, tmp_path):
+    out = tmp_path / "o"
+    out.mkdir()
+    (out / "FIRST.lst").mkdir()
+    deck = ("FIRST\n" + card(c1="M", c31=f10("1.00"), c56="   10") + "\nC\n"
+            "SECOND\n" + card(c1="M", c31=f10("1.00"), c56="   10") + "\nE\n")
+    proc, _ = run_tenzor(deck, out=out)
+    assert proc.returncode == 2
+    assert (out / "SECOND-cond.ptp").exists()
+    assert not list(out.glob("FIRST-*"))

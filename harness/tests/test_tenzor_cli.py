@@ -118,3 +118,33 @@ def test_package_names_are_sanitised(run_tenzor):
     proc, out = run_tenzor(deck)
     assert proc.returncode == 0, proc.stderr
     assert (out / "MY_BOARD_v1_2-cond.ptp").exists()
+
+
+def test_fifo_and_standard_input_read_the_bytes_of_a_file(tenzor_exe, tmp_path):
+    """A deck through a FIFO (as `tenzor <(make-deck)` gives it) or standard
+    input reads exactly as the same bytes in a file: a CR not before a LF is
+    a bad byte in all three, never a line end."""
+    import os
+    import threading
+    deck = EXAMPLE5.read_bytes().replace(b"EXAMPLE5\n", b"EXAMPLE5\rX\n")
+    path = tmp_path / "deck.crd"
+    path.write_bytes(deck)
+    results = []
+    proc = subprocess.run([tenzor_exe, path, "-o", tmp_path / "a"], capture_output=True)
+    results.append(proc)
+    proc = subprocess.run([tenzor_exe, "-o", tmp_path / "b"], input=deck, capture_output=True)
+    results.append(proc)
+    fifo = tmp_path / "fifo"
+    os.mkfifo(fifo)
+    writer = threading.Thread(target=fifo.write_bytes, args=(deck,))
+    writer.start()
+    proc = subprocess.run([tenzor_exe, fifo, "-o", tmp_path / "c"], capture_output=True,
+                          timeout=60)
+    writer.join()
+    results.append(proc)
+    errs = [p.stderr.decode().replace(label, "DECK") for p, label in
+            zip(results, [str(path), "<stdin>", str(fifo)])]
+    assert [p.returncode for p in results] == [1, 1, 1]
+    assert errs[0] == errs[1] == errs[2]
+    assert "CARD 4 COL 9: BYTE 13 IS NOT A CARD CHARACTER" in errs[0]
+    assert _files(tmp_path / "a") == _files(tmp_path / "b") == _files(tmp_path / "c")
