@@ -49,6 +49,7 @@ program tenzor_shell
             end select
         case default
             if (len(arg) > 1 .and. arg(1:1) == '-') call fail('unknown option ' // arg)
+            if (len(arg) == 0) call fail('an empty argument is not a deck')
             if (len(deck_path) > 0) call fail('one deck at a time: ' // deck_path // ' and ' // arg)
             deck_path = arg
         end select

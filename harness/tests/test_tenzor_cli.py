@@ -32,6 +32,7 @@ def test_help(tenzor_exe):
     (["a.crd", "b.crd"], "one deck at a time"),
     (["/nonexistent/deck.crd"], "cannot open the deck"),
     (["/"], "cannot read the deck"),
+    ([""], "an empty argument is not a deck"),
 ])
 def test_usage_errors_exit_2_with_one_clear_line(tenzor_exe, tmp_path, args, fragment):
     proc = subprocess.run([tenzor_exe, *args], capture_output=True, text=True, cwd=tmp_path)
