@@ -1,12 +1,21 @@
 # The two commands of README.md. Both set up what is missing first (scripts/setup.sh).
 #   make demo   punch the tapes of the bundled demo board into out/
 #   make test   run every test: the Fortran tests (fpm test) and the harness (pytest)
+# and, for CI (.ci/run):
+#   make test-checks   the Fortran tests and every harness test that runs tenzor,
+#                      again, on a build with gfortran's run-time checks
 SHELL := /bin/bash
 export PATH := $(CURDIR)/.venv/bin:$(PATH)
 DECK ?= examples/demo.crd
 OUT ?= out
 
-.PHONY: demo test setup build
+# gfortran's run-time checks: bounds, array temporaries, DO variables, pointers,
+# recursion, bits (-fcheck=all); a trap on a floating-point invalid operation,
+# division by zero or overflow; a trap on signed integer overflow (-ftrapv).
+# fpm adds them to its debug profile and builds into a directory of their own.
+CHECKS := -fcheck=all -ffpe-trap=invalid,zero,overflow -ftrapv
+
+.PHONY: demo test test-checks setup build
 
 setup:
 	@bash scripts/setup.sh
@@ -21,3 +30,8 @@ demo: build
 test: build
 	fpm test
 	python -m pytest harness
+
+test-checks: setup
+	fpm test --profile debug --flag "$(CHECKS)"
+	TENZOR_EXE="$$(fpm run --profile debug --flag "$(CHECKS)" --runner echo tenzor 2>/dev/null | tail -n 1)" \
+		python -m pytest harness -m tenzor

@@ -43,8 +43,27 @@ def _fpm_binary(name: str) -> Path:
 
 @pytest.fixture(scope="session")
 def tenzor_exe() -> Path:
-    """Path of the built `tenzor` executable."""
+    """Path of the `tenzor` executable: $TENZOR_EXE when set (CI's second
+    pass runs the suites against a build with gfortran's run-time checks),
+    else the one fpm builds with its default flags."""
+    given = os.environ.get("TENZOR_EXE")
+    if given:
+        path = Path(given).resolve()
+        assert path.is_file(), f"TENZOR_EXE={given} is not a file"
+        return path
     return _fpm_binary("tenzor")
+
+
+def pytest_collection_modifyitems(config, items) -> None:
+    """Mark every test that runs TENZOR with ``tenzor`` (``pytest -m tenzor``
+    selects them: CI's pass against the build with run-time checks)."""
+    for item in items:
+        if "tenzor_exe" in getattr(item, "fixturenames", ()):
+            item.add_marker(pytest.mark.tenzor)
+
+
+def pytest_configure(config) -> None:
+    config.addinivalue_line("markers", "tenzor: the test runs the tenzor executable")
 
 
 @pytest.fixture
