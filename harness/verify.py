@@ -52,7 +52,8 @@ import numpy as np
 from . import raster, sim
 from .deck import (LAYERS, AnyShape, ArcBand, CardError, Disc, Layer, Origin,
                    Package, RoundRect, Stroke, parse_deck, run_shapes)
-from .tape import Frame, Tape, TapeError, decode, frame_rows, frame_text
+from .tape import (DIGITS_8, DIGITS_K, Frame, Tape, TapeError, decode, frame_rows,
+                   frame_text)
 
 #: The machine's accuracy, in units (0.01 mm): the coverage tolerance.
 TOLERANCE = 5
@@ -64,6 +65,10 @@ MAX_REASONS = 15
 #: Share of a pad's rim band (or outer ring) that must be undrawn (drawn)
 #: to call the pad drawn too small (too large).
 RING_SHARE = 0.9
+
+#: Rows that tell the plain code from the code with control: digits 3, 5, 6, 9.
+DECIDING = frozenset(DIGITS_8[d] for d in (3, 5, 6, 9)) | frozenset(
+    DIGITS_K[d] for d in (3, 5, 6, 9))
 
 #: What each tape holds, for the listing.
 TAPE_TITLES: dict[str, str] = {"small": "small pads", "large": "large pads",
@@ -110,6 +115,7 @@ class TapeCheck:
     layer: str
     file: str
     tool: int
+    deck_code: str = "8"
     code: str | None = None
     frames: int | None = None
     rows: int | None = None
@@ -125,7 +131,9 @@ class TapeCheck:
         """One line for the listing (without the reasons)."""
         bits = []
         if self.code is not None:
-            bits.append(f"code {self.code}, {self.frames} frames, {self.rows} rows")
+            other = (f" (the P card says {self.deck_code}: overridden, e.g. by --code?)"
+                     if self.code in ("8", "K") and self.code != self.deck_code else "")
+            bits.append(f"code {self.code}{other}, {self.frames} frames, {self.rows} rows")
         bits.append(f"tool {self.tool / 100:.2f} mm")
         return (f"  {'ok  ' if self.ok else 'FAIL'} {self.file}  "
                 f"({TAPE_TITLES[self.layer]}; {', '.join(bits)})")
@@ -648,7 +656,7 @@ def check_tape(pkg: Package, layer: str, path: Path, tol: int = TOLERANCE,
                code: str = "auto") -> TapeCheck:
     """Check one tape file of a package against the package's ideal layer."""
     tool = dict(zip(LAYERS, pkg.tools))[layer]
-    check = TapeCheck(pkg.name, layer, path.name, tool)
+    check = TapeCheck(pkg.name, layer, path.name, tool, pkg.code)
 
     def fail(kind: str, message: str, **kw: int) -> TapeCheck:
         check.reasons.append(Reason(pkg.name, path.name, kind, message, **kw))
@@ -668,6 +676,8 @@ def check_tape(pkg: Package, layer: str, path: Path, tol: int = TOLERANCE,
     except TapeError as exc:
         return fail("code", f"row {exc.row}: code or grammar error: {exc.message}", row=exc.row)
     check.code, check.frames = tape.code, len(tape.frames)
+    if code == "auto" and not DECIDING.intersection(data):
+        check.code = "8 or K (no digit 3, 5, 6 or 9 tells them apart)"
     frames = tape.frames
     rows = frame_start_rows(data, tape)
     try:

@@ -398,3 +398,34 @@ def test_m_card_drawing_left_out(run_tenzor, tmp_path) -> None:
     assert [(r.kind, r.card) for r in v.reasons] == [("m-drawing", 6)], v.text()
     assert "card 6 (M), M frame 1 of this tape: the line it draws from (0.00, 0.00) mm " \
            "to (-5.00, -5.00) mm: incomplete" in v.text()
+
+
+def test_readme_example_is_true(tenzor_exe, tmp_path) -> None:
+    """README.md shows verify on the demo board's tapes with card 9's pad
+    left out, a stray line added to the large-pad tape and row 101 of the
+    conductor tape punched wrong: that is what verify prints."""
+    readme = (ROOT / "README.md").read_text()
+    shown = readme.split("$ python -m harness verify examples/demo.crd out\n", 1)[1]
+    shown = shown.split("```", 1)[0]
+    (tmp_path / "examples").mkdir()
+    shutil.copy(ROOT / "examples" / "demo.crd", tmp_path / "examples" / "demo.crd")
+    proc = subprocess.run([tenzor_exe, "examples/demo.crd", "-o", "out"], cwd=tmp_path,
+                          capture_output=True, timeout=120)
+    assert proc.returncode == 0
+    path = tmp_path / "out" / "LOGIC-CARD-A-large.ptp"
+    t = tape.decode(path.read_bytes())
+    frames = list(t.frames)
+    idx = block(frames, (300, 700, 7300, 7700))           # card 9: 4 mm at (5, 75) mm
+    dx, dy = sum(frames[i].dx for i in idx), sum(frames[i].dy for i in idx)
+    frames[idx[0]:idx[-1] + 1] = [Frame(dx=dx, dy=dy, k=20)]
+    frames[0:0] = [Frame(dx=1000, dy=500, k=10), Frame(dx=-1000, dy=-500, k=20)]
+    path.write_bytes(tape.encode(frames, t.code))
+    path = tmp_path / "out" / "LOGIC-CARD-A-cond.ptp"
+    data = bytearray(path.read_bytes())
+    data[100] = 0o15
+    path.write_bytes(bytes(data))
+    proc = subprocess.run([sys.executable, "-m", "harness", "verify", "examples/demo.crd", "out"],
+                          cwd=tmp_path, capture_output=True, text=True, timeout=300,
+                          env={**__import__("os").environ, "PYTHONPATH": str(ROOT)})
+    assert proc.returncode == 1, proc.stderr
+    assert proc.stdout == shown
