@@ -58,7 +58,8 @@ C        THE ENDS OF S, AND WHAT IS AROUND IT NOW
          BEST = 1.0D-6
          IBC = -1
          IBREV = 0
-C        ---- CANDIDATES FROM THE NEAREST ENDS OF BOTH ENDS OF S -------
+C        ---- CANDIDATES FROM THE NEAREST ENDS OF BOTH ENDS OF S
+C        ---------
          DO 40 IEND = 1, 2
             IF (IEND .EQ. 1) THEN
                ID = 2 * ITOUR(I) - 1 + IORI(ITOUR(I))
@@ -109,7 +110,8 @@ C              WHOSE ENDS ARE ONE POINT IS TRIED IN BOTH ROLES)
    30       CONTINUE
    40    CONTINUE
          IF (IBC .LT. 0) GOTO 50
-C        ---- MAKE THE MOVE; QUEUE THE ITEMS WHOSE NEIGHBOURS CHANGE ---
+C        ---- MAKE THE MOVE; QUEUE THE ITEMS WHOSE NEIGHBOURS CHANGE
+C        -----
          DO 45 L = 1, 7
             MS(L) = 0
    45    CONTINUE
