@@ -13,7 +13,7 @@ import sys
 from collections.abc import Callable, Sequence
 from pathlib import Path
 
-from . import f77check, seed002, seed004, tape
+from . import f77check, seed002, seed003, seed004, tape
 
 
 def _write(text: str, stream=None) -> None:
@@ -78,6 +78,7 @@ SUBCOMMANDS: dict[str, Callable[[argparse._SubParsersAction], None]] = {
     "profile": seed002.add_profile,
     "equidistant": seed002.add_equidistant,
     "punch5121": seed002.add_punch5121,
+    "cnclink": seed003.add_cnclink,
 }
 
 
