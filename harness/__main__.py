@@ -13,7 +13,7 @@ import sys
 from collections.abc import Callable, Sequence
 from pathlib import Path
 
-from . import f77check, seed002, seed003, seed004, tape
+from . import dxf2deck, dxfboard, f77check, seed002, seed003, seed004, tape
 
 
 def _write(text: str, stream=None) -> None:
@@ -79,6 +79,8 @@ SUBCOMMANDS: dict[str, Callable[[argparse._SubParsersAction], None]] = {
     "equidistant": seed002.add_equidistant,
     "punch5121": seed002.add_punch5121,
     "cnclink": seed003.add_cnclink,
+    "dxf2deck": dxf2deck.add_dxf2deck,
+    "dxfboard": dxfboard.add_dxfboard,
 }
 
 
