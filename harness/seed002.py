@@ -773,6 +773,37 @@ def read_5121(data: bytes) -> list[Frame5121]:
 
 
 # ---------------------------------------------------------------------------
+# A picture.
+# ---------------------------------------------------------------------------
+def contours_svg(layers: Sequence[tuple[Sequence[Element], str]], scale: float = 4.0,
+                 margin: float = 12.0) -> str:
+    """An SVG drawing of contours, each (elements, colour), y upwards, 1 mm
+    = ``scale`` pixels; arcs as SVG arcs."""
+    pts = [p for els, _ in layers for e in els for p in sample(e, 2.0)]
+    x0, x1 = min(p[0] for p in pts) - margin, max(p[0] for p in pts) + margin
+    y0, y1 = min(p[1] for p in pts) - margin, max(p[1] for p in pts) + margin
+
+    def f(x: float, y: float) -> str:
+        return f"{(x - x0) * scale:.2f} {(y1 - y) * scale:.2f}"
+
+    out = [f'<svg xmlns="http://www.w3.org/2000/svg" width="{(x1 - x0) * scale:.0f}" '
+           f'height="{(y1 - y0) * scale:.0f}">', '<rect width="100%" height="100%" fill="white"/>']
+    for els, colour in layers:
+        d = [f"M{f(els[0].x0, els[0].y0)}"]
+        for e in els:
+            if isinstance(e, Seg):
+                d.append(f"L{f(e.x1, e.y1)}")
+            else:
+                big = 1 if e.sweep > math.pi else 0
+                sweep_flag = 1 if e.cw else 0       # y flips: clockwise on paper is flag 1
+                d.append(f"A{e.r * scale:.2f} {e.r * scale:.2f} 0 {big} {sweep_flag} "
+                         f"{f(e.x1, e.y1)}")
+        out.append(f'<path d="{" ".join(d)}" fill="none" stroke="{colour}" stroke-width="1.5"/>')
+    out.append("</svg>")
+    return "\n".join(out) + "\n"
+
+
+# ---------------------------------------------------------------------------
 # Decks.
 # ---------------------------------------------------------------------------
 #: Where the flange's origin goes on the coordinatograph's field (mm).
@@ -905,6 +936,14 @@ def _run_equidistant(args) -> int:
     try:
         text = sys.stdin.read() if args.deck == "-" else open(args.deck, encoding="ascii").read()
         out = equidistant_deck(text, args.cutter, not args.inside, args.chords)
+        if args.svg:
+            from .deck import parse_deck
+            layers = []
+            for pkg in parse_deck(text):
+                contour = close_chain(contour_from_package(pkg))
+                layers += [(contour, "black"),
+                           (equidistant(contour, args.cutter / 2, not args.inside), "#c00")]
+            open(args.svg, "w", encoding="ascii").write(contours_svg(layers))
         if args.output:
             open(args.output, "w", encoding="ascii").write(out)
         else:
@@ -931,6 +970,7 @@ def add_equidistant(sub) -> None:
     p.add_argument("--chords", type=float, default=None, metavar="TOL",
                    help="write arcs as chords within TOL mm (line-only machines)")
     p.add_argument("-o", "--output", metavar="DECK", help="output deck (default stdout)")
+    p.add_argument("--svg", metavar="FILE.svg", help="also draw the contour and the path")
     p.set_defaults(func=_run_equidistant)
 
 

@@ -312,8 +312,10 @@ def test_flange_deck_reads_back() -> None:
 
 def test_equidistant_command(tmp_path: Path) -> None:
     out = tmp_path / "eq.crd"
+    svg = tmp_path / "flange.svg"
     assert main(["equidistant", str(ROOT / "examples" / "flange.crd"), "--chords", "0.02",
-                 "-o", str(out)]) == 0
+                 "-o", str(out), "--svg", str(svg)]) == 0
+    assert svg.read_text() == (ROOT / "docs" / "img" / "flange.svg").read_text()
     text = out.read_text()
     assert "\nA" not in text and text.count("\n+") > 100            # arcs as chords
     bad = tmp_path / "open.crd"
