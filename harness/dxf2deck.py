@@ -37,6 +37,8 @@ says which drawing point does; coordinates are rounded to 0.01 mm.
 
 from __future__ import annotations
 
+import argparse
+
 import math
 import re
 from collections.abc import Iterable, Iterator, Sequence
@@ -245,11 +247,14 @@ def _entity_items(e: Any, origin: Point, problems: list[str],
         if not e.is_2d_polyline:
             problems.append(f"{_where(e)}: a 3D polyline or mesh; left out")
             return []
-        sw, ew = float(e.dxf.default_start_width), float(e.dxf.default_end_width)
-        vws = {(float(v.dxf.start_width), float(v.dxf.end_width)) for v in e.vertices}
-        if sw != ew or len(vws | {(sw, ew)}) > 1 and vws != {(0.0, 0.0)}:
+        own = {float(v.dxf.start_width) for v in e.vertices} | \
+            {float(v.dxf.end_width) for v in e.vertices}
+        widths = own if own != {0.0} else {float(e.dxf.default_start_width),
+                                           float(e.dxf.default_end_width)}
+        if len(widths) != 1:
             problems.append(f"{_where(e)}: varying width; left out")
             return []
+        sw = widths.pop()
         pts = _wcs(e, [v.dxf.location for v in e.vertices])
         verts = [(p, float(v.dxf.bulge)) for p, v in zip(pts, e.vertices)]
         item = _polyline_item(e, verts, bool(e.is_closed), sw, origin, problems)
@@ -366,7 +371,7 @@ def _pair(text: str) -> Point:
     return x, y
 
 
-def _run(args) -> int:
+def _run(args: argparse.Namespace) -> int:
     import sys
 
     import ezdxf
@@ -408,7 +413,7 @@ def _run(args) -> int:
     return 1 if unmapped else 0
 
 
-def add_dxf2deck(sub) -> None:
+def add_dxf2deck(sub: argparse._SubParsersAction) -> None:
     p = sub.add_parser(
         "dxf2deck", help="a DXF drawing to a TENZOR card deck (seed 001)",
         description="Turn a DXF drawing (mm) into a card deck: CIRCLE -> pad (layer RING*: "

@@ -21,6 +21,8 @@ SIGNAL_W0.8 (the layer rule), an ARC and a circle on layer RING.
 
 from __future__ import annotations
 
+import argparse
+
 from decimal import Decimal as D
 from pathlib import Path
 
@@ -117,7 +119,7 @@ def write_dxf(path: str | Path, offset: tuple[float, float] = (0.0, 0.0)) -> Non
         ezdxf.options.write_fixed_meta_data_for_testing = saved
 
 
-def _run(args) -> int:
+def _run(args: argparse.Namespace) -> int:
     import sys
 
     out = Path(args.dir)
@@ -131,7 +133,7 @@ def _run(args) -> int:
     return 0
 
 
-def add_dxfboard(sub) -> None:
+def add_dxfboard(sub: argparse._SubParsersAction) -> None:
     p = sub.add_parser("dxfboard", help="write the DXF round trip's known board (seed 001)",
                        description="Write DIR/board.dxf (with ezdxf) and DIR/board-known.crd: "
                                    "the same board as a drawing and as cards.")

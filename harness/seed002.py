@@ -29,6 +29,8 @@ Lengths are millimetres (floats or Fractions) unless a name says units
 
 from __future__ import annotations
 
+import argparse
+
 import math
 from collections.abc import Iterable, Sequence
 from dataclasses import dataclass, replace
@@ -885,7 +887,7 @@ def _read_points(path: str) -> list[Point]:
     return pts
 
 
-def _run_profile(args) -> int:
+def _run_profile(args: argparse.Namespace) -> int:
     import sys
     try:
         if args.paper:
@@ -913,7 +915,7 @@ def _run_profile(args) -> int:
     return 0
 
 
-def add_profile(sub) -> None:
+def add_profile(sub: argparse._SubParsersAction) -> None:
     p = sub.add_parser(
         "profile", help="a tabulated profile as lines and Lagrange quadratics (seed 002)",
         description="Approximate a tabulated profile (default: Table 1 of the Ural-1 "
@@ -931,7 +933,7 @@ def add_profile(sub) -> None:
     p.set_defaults(func=_run_profile)
 
 
-def _run_equidistant(args) -> int:
+def _run_equidistant(args: argparse.Namespace) -> int:
     import sys
     try:
         text = sys.stdin.read() if args.deck == "-" else open(args.deck, encoding="ascii").read()
@@ -957,7 +959,7 @@ def _run_equidistant(args) -> int:
     return 0
 
 
-def add_equidistant(sub) -> None:
+def add_equidistant(sub: argparse._SubParsersAction) -> None:
     p = sub.add_parser(
         "equidistant", help="cutter-centre path of a contour of lines and arcs (seed 002)",
         description="Read a card deck whose L/+ and A cards form one closed contour per "
@@ -996,7 +998,7 @@ def _read_frames_text(text: str) -> list[Frame5121]:
     return frames
 
 
-def _run_punch5121(args) -> int:
+def _run_punch5121(args: argparse.Namespace) -> int:
     import sys
     try:
         if args.decode:
@@ -1019,7 +1021,7 @@ def _run_punch5121(args) -> int:
     return 0
 
 
-def add_punch5121(sub) -> None:
+def add_punch5121(sub: argparse._SubParsersAction) -> None:
     p = sub.add_parser(
         "punch5121", help="punch frames in the 5121 code of the LKP-01F (seed 002)",
         description="Punch frames 'DX DY [DZ [SPEED [AUX_X [AUX_Y]]]]' (pulses; DX, DY "

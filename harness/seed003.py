@@ -37,6 +37,8 @@ nothing until the whole program has arrived intact.
 
 from __future__ import annotations
 
+import argparse
+
 import socket
 import struct
 import threading
@@ -397,7 +399,7 @@ def deck_polylines(text: str) -> list[list[Point]]:
     return [list(c.points) for pkg in parse_deck(text) for c in pkg.conductors]
 
 
-def _run_cnclink(args) -> int:
+def _run_cnclink(args: argparse.Namespace) -> int:
     import sys
     try:
         text = sys.stdin.read() if args.input == "-" else open(args.input, encoding="ascii").read()
@@ -429,7 +431,7 @@ def _run_cnclink(args) -> int:
     return 0
 
 
-def add_cnclink(sub) -> None:
+def add_cnclink(sub: argparse._SubParsersAction) -> None:
     p = sub.add_parser(
         "cnclink", help="send polylines to a simulated CNC in 128-byte CRC blocks (seed 003)",
         description="Encode polylines (a file of 'x y' lines in pulses, a blank line "

@@ -38,6 +38,8 @@ counter at a time):
 
 from __future__ import annotations
 
+import argparse
+
 import math
 from collections.abc import Sequence
 from dataclasses import dataclass
@@ -385,7 +387,7 @@ def svg_plot(run: Interpolation, width: int = 720) -> str:
 # ---------------------------------------------------------------------------
 # Command line: python -m harness split / dda.
 # ---------------------------------------------------------------------------
-def _run_split(args) -> int:
+def _run_split(args: argparse.Namespace) -> int:
     import sys
     try:
         frames = split_move(args.dx, args.dy, args.max)
@@ -396,7 +398,7 @@ def _run_split(args) -> int:
     return 0
 
 
-def add_split(sub) -> None:
+def add_split(sub: argparse._SubParsersAction) -> None:
     """``split --max N DX DY``: one frame a line."""
     p = sub.add_parser(
         "split", help="split a long move into frames of at most N pulses (seed 004)",
@@ -412,7 +414,7 @@ def add_split(sub) -> None:
     p.set_defaults(func=_run_split)
 
 
-def _run_dda(args) -> int:
+def _run_dda(args: argparse.Namespace) -> int:
     import sys
     from pathlib import Path
     try:
@@ -430,7 +432,7 @@ def _run_dda(args) -> int:
     return 0
 
 
-def add_dda(sub) -> None:
+def add_dda(sub: argparse._SubParsersAction) -> None:
     """``dda DX DY [--method M] [--size S] [--max N] [--plot FILE.svg]``."""
     p = sub.add_parser(
         "dda", help="simulate a pulse-multiplier linear interpolator (seed 004)",

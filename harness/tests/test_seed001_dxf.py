@@ -115,6 +115,21 @@ def test_widths_and_layers() -> None:
     assert len(conv.items) == 5 and any("varying width" in p for p in conv.problems)
 
 
+def test_old_style_polylines() -> None:
+    """POLYLINE (2D): the default width, or the vertices' one common width."""
+    doc, msp = _doc()
+    msp.add_polyline2d([(0, 0), (10, 0)], dxfattribs={"default_start_width": 0.7,
+                                                      "default_end_width": 0.7})
+    pl = msp.add_polyline2d([(0, 5), (10, 5)])
+    for v in pl.vertices:
+        v.dxf.start_width = v.dxf.end_width = 0.4
+    msp.add_polyline2d([(0, 9), (10, 9)], dxfattribs={"default_start_width": 0.7,
+                                                      "default_end_width": 0.2})
+    conv = d2d.convert(doc)
+    assert [it.cards[0][30:38] for it in conv.items] == ["    0.70", "    0.40"]
+    assert len(conv.problems) == 1 and "POLYLINE #" in conv.problems[0]
+
+
 def test_bulges_become_chords_within_tolerance() -> None:
     """A polyline vertex with bulge 1 is a half circle (here of radius 5)."""
     doc, msp = _doc()
