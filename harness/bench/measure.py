@@ -60,10 +60,15 @@ def run_once(exe: Path, deck: Path, out: Path) -> tuple[float, float]:
     return seconds, usage.ru_utime + usage.ru_stime
 
 
-def time_tenzor(exe: Path, deck: Path, out: Path, repeats: int
-                ) -> tuple[list[float], list[float]]:
-    """Wall and CPU times of ``repeats`` runs, each in a fresh process."""
-    runs = [run_once(exe, deck, out) for _ in range(repeats)]
+def time_tenzor(exe: Path, deck: Path, out: Path, repeats: int,
+                budget: float = 1.0, cap: int = 30) -> tuple[list[float], list[float]]:
+    """Wall and CPU times of at least ``repeats`` runs, each in a fresh
+    process; short runs are repeated until they add up to ``budget``
+    seconds (at most ``cap`` runs), since the wall time of a run of a few
+    milliseconds on a shared machine is mostly the wait for a free core."""
+    runs = []
+    while len(runs) < repeats or (sum(w for w, _ in runs) < budget and len(runs) < cap):
+        runs.append(run_once(exe, deck, out))
     return [w for w, _ in runs], [c for _, c in runs]
 
 

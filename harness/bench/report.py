@@ -22,7 +22,7 @@ COLUMNS: dict[str, str] = {
     "tenzor_s": "TENZOR deck to tapes, wall seconds, minimum of the repeats",
     "tenzor_s_max": "the slowest repeat",
     "tenzor_cpu_s": "TENZOR's CPU time (user + system), minimum of the repeats",
-    "repeats": "runs timed",
+    "repeats": "runs timed (at least --repeats, more for short runs: 1 s in all, at most 30)",
     "peak_rss_mb": "TENZOR's peak resident set size, MiB (VmHWM)",
     "frames": "frames on the three tapes",
     "rows": "rows on the three tapes (tape length at 2.54 mm a row)",
