@@ -72,13 +72,13 @@ def tape_tours(board: boards.Board, stats: dict[str, measure.TapeStats],
 
 
 def run_board(board: boards.Board, exe: Path, scratch: Path, repeats: int,
-              lkh_max: int, nn_max: int) -> dict:
+              lkh_max: int, nn_max: int, min_seconds: float = 1.0) -> dict:
     """Every figure of one board, as a row of the CSV (report.COLUMNS)."""
     deck = scratch / f"{board.name}.crd"
     text = board.deck()
     deck.write_text(text, encoding="ascii")
     out = scratch / board.name
-    seconds, cpu = measure.time_tenzor(exe, deck, out, repeats)
+    seconds, cpu = measure.time_tenzor(exe, deck, out, repeats, budget=min_seconds)
     rss_kb = measure.peak_rss(exe, deck, out)
     stats = measure.read_tapes(out, board.name)
     job = measure.read_job(out / f"{board.name}.job")

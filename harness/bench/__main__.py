@@ -2,8 +2,10 @@
 
 Builds TENZOR with ``fpm build --profile release`` (unless ``--tenzor``
 names a binary), runs every board, prints the table and the targets, and
-writes ``bench.csv``, ``bench.txt`` and ``bench.svg`` into ``--out``
+writes ``bench.csv``, ``bench.txt`` (the table and the targets),
+``bench.md`` (the table in Markdown) and ``bench.svg`` into ``--out``
 (default ``out/bench``; the decks and tapes go to ``--out``/scratch).
+``--report CSV`` re-renders an earlier run without running anything.
 Exit status 0, or 2 for a usage or build problem.
 """
 
@@ -66,17 +68,42 @@ def build_parser() -> argparse.ArgumentParser:
                    help="distributions (default uniform,clustered,grid)")
     p.add_argument("--repeats", type=int, metavar="N",
                    help="timed runs of TENZOR per board, the minimum is kept (default 5)")
+    p.add_argument("--min-seconds", type=float, default=1.0, metavar="S",
+                   help="repeat short runs until they add up to S seconds, at most 30 runs "
+                        "(default 1)")
     p.add_argument("--lkh-max", type=int, default=10000, metavar="N",
                    help="largest board given to LKH-3 (default 10000)")
     p.add_argument("--nn-max", type=int, default=100000, metavar="N",
                    help="largest board given to the Python nearest neighbour (default 100000)")
     p.add_argument("--tenzor", type=Path, metavar="EXE",
                    help="the TENZOR binary to time (default: build the release profile)")
+    p.add_argument("--report", type=Path, metavar="CSV",
+                   help="run nothing: print the table and targets of an earlier bench.csv "
+                        "and write its bench.txt, bench.md and bench.svg into --out")
     return p
+
+
+def write_outputs(rows: Sequence[dict], out: Path) -> str:
+    """bench.txt, bench.md and bench.svg of the rows (bench.csv is the
+    caller's); returns the text of bench.txt."""
+    text = report.table(rows) + "\n" + report.targets_text(rows)
+    (out / "bench.txt").write_text(text, encoding="ascii")
+    (out / "bench.md").write_text(report.table(rows, markdown=True), encoding="ascii")
+    (out / "bench.svg").write_text(report.svg(rows), encoding="ascii")
+    return text
 
 
 def main(argv: Sequence[str] | None = None) -> int:
     args = build_parser().parse_args(argv)
+    if args.report:
+        try:
+            rows = report.read_csv(args.report)
+        except OSError as exc:
+            print(f"{args.report}: {exc.strerror or exc}", file=sys.stderr)
+            return 2
+        args.out.mkdir(parents=True, exist_ok=True)
+        print(write_outputs(rows, args.out), end="")
+        return 0
     sizes = args.sizes or ([100, 1000] if args.quick else list(boards.SIZES))
     repeats = args.repeats or (2 if args.quick else 5)
     if repeats < 1:
@@ -104,16 +131,14 @@ def main(argv: Sequence[str] | None = None) -> int:
         for dist in args.dists:
             t = time.perf_counter()
             board = boards.make_board(dist, size)
-            row = run_board(board, exe, scratch, repeats, args.lkh_max, args.nn_max)
+            row = run_board(board, exe, scratch, repeats, args.lkh_max, args.nn_max,
+                            args.min_seconds)
             rows.append(row)
             print(f"  {row['board']}: TENZOR {row['tenzor_s']:.3f} s, "
                   f"{row['peak_rss_mb']:.1f} MB; board done in {time.perf_counter() - t:.0f} s",
                   flush=True)
     report.write_csv(rows, out / "bench.csv")
-    text = report.table(rows) + "\n" + report.targets_text(rows)
-    (out / "bench.txt").write_text(text, encoding="ascii")
-    (out / "bench.md").write_text(report.table(rows, markdown=True), encoding="ascii")
-    (out / "bench.svg").write_text(report.svg(rows), encoding="ascii")
+    text = write_outputs(rows, out)
     print()
     print(text, end="")
     print(f"\n{len(rows)} boards in {time.perf_counter() - started:.0f} s; "

@@ -4,7 +4,7 @@ Every board is one package of one deck at scale 1:1, start point at
 X0 = Y0 = 20 mm on the field, tools W1 = 0.50, W2 = 1.00, W3 = 0.50 mm and
 DMAX = 2.00 mm.  Board coordinates (relative to the start point) run from 0
 to the board's side S = sqrt(12 mm^2 x pads), rounded up to the 2.5 mm grid:
-34 mm for 100 pads, 110 mm for 1 000, 347 mm for 10 000, 1 097.5 mm for
+35 mm for 100 pads, 110 mm for 1 000, 347.5 mm for 10 000, 1 097.5 mm for
 100 000 (so 20 + 1 097.5 mm stays on the 1 200 mm field).  Lengths are
 integers in 0.01 mm ("units"), as everywhere in the harness.
 

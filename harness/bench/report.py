@@ -22,7 +22,7 @@ COLUMNS: dict[str, str] = {
     "tenzor_s": "TENZOR deck to tapes, wall seconds, minimum of the repeats",
     "tenzor_s_max": "the slowest repeat",
     "tenzor_cpu_s": "TENZOR's CPU time (user + system), minimum of the repeats",
-    "repeats": "runs timed (at least --repeats, more for short runs: 1 s in all, at most 30)",
+    "repeats": "runs timed (at least --repeats; short runs until --min-seconds, at most 30)",
     "peak_rss_mb": "TENZOR's peak resident set size, MiB (VmHWM)",
     "frames": "frames on the three tapes",
     "rows": "rows on the three tapes (tape length at 2.54 mm a row)",
@@ -89,7 +89,7 @@ TABLE: tuple[tuple[str, str, str], ...] = (
     ("deck m", "tour_deck_m", ".1f"), ("NN m", "tour_nn_m", ".2f"),
     ("TENZOR m", "tour_tenzor_m", ".2f"), ("LKH m", "tour_ref_m", ".2f"),
     ("T/LKH", "tenzor_vs_ref", ".3f"), ("NN/LKH", "nn_vs_ref", ".3f"),
-    ("LKH s", "ref_s", ".1f"), ("Ts/LKHs", "time_vs_ref", ".4f"),
+    ("LKH s", "ref_s", ".3g"), ("Ts/LKHs", "time_vs_ref", ".4f"),
 )
 
 
