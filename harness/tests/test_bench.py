@@ -8,17 +8,20 @@ from __future__ import annotations
 
 import math
 import xml.etree.ElementTree as ET
+from pathlib import Path
 
 import pytest
 
 from harness.bench import __main__ as bench_main
 from harness.bench import boards, report, tours
 
+ROOT = Path(__file__).resolve().parents[2]
+
 
 @pytest.fixture(scope="module")
 def quick_run(tenzor_exe, tmp_path_factory):
     out = tmp_path_factory.mktemp("bench")
-    status = bench_main.main(["--quick", "--sizes", "100", "--repeats", "1",
+    status = bench_main.main(["--quick", "--sizes", "100", "--repeats", "1", "--min-seconds", "0",
                               "--tenzor", str(tenzor_exe), "--out", str(out)])
     assert status == 0
     return out
@@ -93,3 +96,10 @@ def test_boards_are_deterministic_and_fit_the_field():
         for p in board.pads:
             for x, y in p.centres():
                 assert 0 < x < board.side and 0 < y < board.side
+
+
+def test_performance_md_shows_the_recorded_run():
+    """docs/PERFORMANCE.md's table is the one of harness/bench/results/bench.csv."""
+    rows = report.read_csv(ROOT / "harness" / "bench" / "results" / "bench.csv")
+    doc = (ROOT / "docs" / "PERFORMANCE.md").read_text(encoding="utf-8")
+    assert report.table(rows, markdown=True) in doc
