@@ -1,12 +1,15 @@
-# The two commands of README.md. Both set up what is missing first (scripts/setup.sh).
+# The commands of README.md. Each sets up what is missing first (scripts/setup.sh).
 #   make demo   punch the tapes of the bundled demo board into out/
 #   make test   run every test: the Fortran tests (fpm test) and the harness (pytest)
+#   make bench  the benchmarks of docs/PERFORMANCE.md (about 10 minutes; BENCH_ARGS=--quick
+#               for the 100- and 1 000-pad boards): a table, and out/bench/bench.csv, .svg
 SHELL := /bin/bash
 export PATH := $(CURDIR)/.venv/bin:$(PATH)
 DECK ?= examples/demo.crd
 OUT ?= out
+BENCH_ARGS ?=
 
-.PHONY: demo test setup build
+.PHONY: demo test bench setup build
 
 setup:
 	@bash scripts/setup.sh
@@ -21,3 +24,7 @@ demo: build
 test: build
 	fpm test
 	python -m pytest harness
+
+# harness.bench builds the release profile of TENZOR itself (fpm build --profile release).
+bench: setup
+	python -m harness.bench $(BENCH_ARGS)
