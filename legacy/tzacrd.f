@@ -110,6 +110,11 @@ C
      1         // 'ITS CENTRE; THE START MUST LIE ON THE CIRCLE')
             RETURN
          END IF
+         IF (IXE .EQ. IXC .AND. IYE .EQ. IYC) THEN
+            CALL CMERR('TENZOR', NCARD, 51, 'THE END OF THE ARC IS ITS '
+     1         // 'CENTRE; THE END MUST LIE ON THE CIRCLE')
+            RETURN
+         END IF
          IF (IXS .EQ. IXE .AND. IYS .EQ. IYE) THEN
             CALL CMERR('TENZOR', NCARD, 51, 'THE ARC ENDS WHERE IT '
      1         // 'STARTS; FOR A FULL CIRCLE USE AN O CARD')
