@@ -1,6 +1,8 @@
-# The two commands of README.md. Both set up what is missing first (scripts/setup.sh).
+# The commands of README.md. Each sets up what is missing first (scripts/setup.sh).
 #   make demo   punch the tapes of the bundled demo board into out/
 #   make test   run every test: the Fortran tests (fpm test) and the harness (pytest)
+#   make bench  the benchmarks of docs/PERFORMANCE.md (about 10 minutes; BENCH_ARGS=--quick
+#               for the 100- and 1 000-pad boards): a table, and out/bench/bench.csv, .svg
 # and, for CI (.ci/run):
 #   make test-checks   the Fortran tests and every harness test that runs tenzor,
 #                      again, on a build with gfortran's run-time checks
@@ -8,6 +10,7 @@ SHELL := /bin/bash
 export PATH := $(CURDIR)/.venv/bin:$(PATH)
 DECK ?= examples/demo.crd
 OUT ?= out
+BENCH_ARGS ?=
 
 # gfortran's run-time checks: bounds, array temporaries, DO variables, pointers,
 # recursion, bits (-fcheck=all); a trap on a floating-point invalid operation,
@@ -15,7 +18,7 @@ OUT ?= out
 # fpm adds them to its debug profile and builds into a directory of their own.
 CHECKS := -fcheck=all -ffpe-trap=invalid,zero,overflow -ftrapv
 
-.PHONY: demo test test-checks setup build
+.PHONY: demo test test-checks bench setup build
 
 setup:
 	@bash scripts/setup.sh
@@ -35,3 +38,7 @@ test-checks: setup
 	fpm test --profile debug --flag "$(CHECKS)"
 	TENZOR_EXE="$$(fpm run --profile debug --flag "$(CHECKS)" --runner echo tenzor 2>/dev/null | tail -n 1)" \
 		python -m pytest harness -m tenzor
+
+# harness.bench builds the release profile of TENZOR itself (fpm build --profile release).
+bench: setup
+	python -m harness.bench $(BENCH_ARGS)

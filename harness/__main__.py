@@ -13,7 +13,7 @@ import sys
 from collections.abc import Callable, Sequence
 from pathlib import Path
 
-from . import f77check, tape, verify
+from . import dxf2deck, dxfboard, f77check, seed002, seed003, seed004, tape, verify
 
 
 def _write(text: str, stream=None) -> None:
@@ -96,6 +96,14 @@ SUBCOMMANDS: dict[str, Callable[[argparse._SubParsersAction], None]] = {
     "decode": _add_decode,
     "f77check": _add_f77check,
     "verify": _add_verify,
+    "split": seed004.add_split,
+    "dda": seed004.add_dda,
+    "profile": seed002.add_profile,
+    "equidistant": seed002.add_equidistant,
+    "punch5121": seed002.add_punch5121,
+    "cnclink": seed003.add_cnclink,
+    "dxf2deck": dxf2deck.add_dxf2deck,
+    "dxfboard": dxfboard.add_dxfboard,
 }
 
 

@@ -485,6 +485,7 @@ class _Builder:
         self.scale = (1, 1)
         self.code = "8"
         self.order = "O"
+        self.fmax = 0
         self.pads: list[Pad] = []
         self.conductors: list[Conductor] = []
         self.circles: list[Circle] = []
@@ -520,7 +521,12 @@ class _Builder:
         if self.p_seen or self.geometry or any(self.m.values()):
             raise CardError(no, "P card must be the only one, before the geometry")
         self.p_seen = True
-        _blank(c, [(2, 10), (69, 69), (72, 72)], no)
+        _blank(c, [(2, 2), (69, 69), (72, 72)], no)
+        # columns 3-10: FMAX, the frame limit (seed 004); it changes how the
+        # moves are cut into frames, never what is drawn
+        self.fmax = integer(c, 3, 10, no, 0)
+        if self.fmax < 0:
+            raise CardError(no, "FMAX must not be negative")
         self.x0 = real(c, 11, 20, no)
         self.y0 = real(c, 21, 30, no)
         self.w1 = real(c, 31, 38, no, 50)

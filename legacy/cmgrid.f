@@ -22,13 +22,15 @@ C     ---- /CMITM/ THE ITEMS OF A TAPE AND THE TOUR THROUGH THEM -------
      1               IORI
 C     ---- /CMTWK/ WORK SPACE OF THE TOUR: GRID, NEIGHBOURS, QUEUE -----
       INTEGER MXPT, MXCEL, MXNB
-      PARAMETER (MXPT = 2 * MXITM, MXCEL = 2 * MXITM, MXNB = 8)
+      PARAMETER (MXPT = 2 * MXITM, MXCEL = 2 * MXITM, MXNB = 10)
       INTEGER NGX, NGY, KGX0, KGY0, KGCS, KDSX, KDSY, KDTX, KDTY,
-     1        KQX(MXPT), KQY(MXPT), KCST(MXCEL + 1), KCCN(MXCEL),
-     2        KCEL(MXPT), KSLT(MXPT), KNB(MXNB, MXPT), KQUE(MXITM),
-     3        LQUE(MXITM)
+     1        KQHD, KQN, KWORK, KWMAX,
+     2        KQX(MXPT), KQY(MXPT), KCST(MXCEL + 1), KCCN(MXCEL),
+     3        KCEL(MXPT), KSLT(MXPT), KNB(MXNB, MXPT), KQUE(MXITM),
+     4        LQUE(MXITM)
       COMMON /CMTWK/ NGX, NGY, KGX0, KGY0, KGCS, KDSX, KDSY, KDTX, KDTY,
-     1               KQX, KQY, KCST, KCCN, KCEL, KSLT, KNB, KQUE, LQUE
+     1               KQHD, KQN, KWORK, KWMAX, KQX, KQY, KCST, KCCN,
+     2               KCEL, KSLT, KNB, KQUE, LQUE
 C     ---- LOCAL -------------------------------------------------------
       INTEGER I, IP, IC, IX1, IX2, IY1, IY2, NC
       DOUBLE PRECISION W, H, CS

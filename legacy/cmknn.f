@@ -19,13 +19,15 @@ C     ---- /CMITM/ THE ITEMS OF A TAPE AND THE TOUR THROUGH THEM -------
      1               IORI
 C     ---- /CMTWK/ WORK SPACE OF THE TOUR: GRID, NEIGHBOURS, QUEUE -----
       INTEGER MXPT, MXCEL, MXNB
-      PARAMETER (MXPT = 2 * MXITM, MXCEL = 2 * MXITM, MXNB = 8)
+      PARAMETER (MXPT = 2 * MXITM, MXCEL = 2 * MXITM, MXNB = 10)
       INTEGER NGX, NGY, KGX0, KGY0, KGCS, KDSX, KDSY, KDTX, KDTY,
-     1        KQX(MXPT), KQY(MXPT), KCST(MXCEL + 1), KCCN(MXCEL),
-     2        KCEL(MXPT), KSLT(MXPT), KNB(MXNB, MXPT), KQUE(MXITM),
-     3        LQUE(MXITM)
+     1        KQHD, KQN, KWORK, KWMAX,
+     2        KQX(MXPT), KQY(MXPT), KCST(MXCEL + 1), KCCN(MXCEL),
+     3        KCEL(MXPT), KSLT(MXPT), KNB(MXNB, MXPT), KQUE(MXITM),
+     4        LQUE(MXITM)
       COMMON /CMTWK/ NGX, NGY, KGX0, KGY0, KGCS, KDSX, KDSY, KDTX, KDTY,
-     1               KQX, KQY, KCST, KCCN, KCEL, KSLT, KNB, KQUE, LQUE
+     1               KQHD, KQN, KWORK, KWMAX, KQX, KQY, KCST, KCCN,
+     2               KCEL, KSLT, KNB, KQUE, LQUE
 C     ---- LOCAL -------------------------------------------------------
       INTEGER IP, IC, ICX, ICY, K, IGX, IGY, IS, IQ, ISTEP, KMAX, N, J,
      1        NBI(MXNB)
@@ -49,8 +51,13 @@ C
                   IC = IGX + IGY * NGX + 1
                   DO 10 IS = KCST(IC), KCST(IC) + KCCN(IC) - 1
                      IQ = KCEL(IS)
-C                    NOT ITSELF, NOT THE OTHER END OF ITS OWN ITEM
+C                    NOT ITSELF, NOT THE OTHER END OF ITS OWN ITEM,
+C                    AND AN ITEM WHOSE ENDS ARE ONE POINT ONLY ONCE
                      IF ((IQ + 1) / 2 .EQ. (IP + 1) / 2) GOTO 10
+                     IF (MOD(IQ, 2) .EQ. 0) THEN
+                        IF (KQX(IQ) .EQ. KQX(IQ-1) .AND.
+     1                      KQY(IQ) .EQ. KQY(IQ-1)) GOTO 10
+                     END IF
                      D = (DBLE(KQX(IQ)) - KQX(IP))**2 +
      1                   (DBLE(KQY(IQ)) - KQY(IP))**2
                      CALL CMKINS(NBI, NBD, N, MXNB, IQ, D)

@@ -1,12 +1,18 @@
 C=======================================================================
-C     CMOPT2 - IMPROVE THE TOUR BY 2-OPT MOVES                  (SHARED)
-C     SOURCE:  RECONSTRUCTED (SEE CMTOUR). A MOVE TAKES OUT THE MOVES
-C              AFTER PLACES A AND B (A .LT. B) AND PUTS IN THE MOVES
-C              EXIT(A)-EXIT(B) AND ENTRY(A+1)-ENTRY(B+1): THE ITEMS AT
-C              A+1..B ARE THEN DRAWN IN REVERSE ORDER AND DIRECTION.
-C              A NEW MOVE EXIT-EXIT IS ONLY TRIED TOWARDS ONE OF THE
-C              NEAREST ENDS (KNB), AND ONLY IF SHORTER THAN THE MOVE IT
-C              REPLACES; LIKEWISE ENTRY-ENTRY.
+C     CMOPT2 - IMPROVE THE TOUR BY 2-OPT AND OR-OPT MOVES     (SHARED)
+C     SOURCE:  RECONSTRUCTED (SEE CMTOUR). A 2-OPT MOVE TAKES OUT THE
+C              MOVES AFTER PLACES A AND B (A .LT. B) AND PUTS IN THE
+C              MOVES EXIT(A)-EXIT(B) AND ENTRY(A+1)-ENTRY(B+1): THE
+C              ITEMS AT A+1..B ARE THEN DRAWN IN REVERSE ORDER AND
+C              DIRECTION. A NEW MOVE EXIT-EXIT IS ONLY TRIED TOWARDS ONE
+C              OF THE NEAREST ENDS (KNB), AND ONLY IF SHORTER THAN THE
+C              MOVE IT REPLACES; LIKEWISE ENTRY-ENTRY. WHEN NO 2-OPT
+C              MOVE HELPS AN ITEM, OR-OPT (CMOROP) TRIES TO MOVE IT,
+C              WITH THE ONE OR TWO AFTER IT, ELSEWHERE. ITEMS ARE TAKEN
+C              FROM A QUEUE; AN ITEM WHOSE NEIGHBOURS CHANGE GOES BACK
+C              ON IT. ROUND 1 IS 2-OPT ALONE; EACH FURTHER ROUND (AT
+C              MOST 10) QUEUES EVERY ITEM AGAIN AND ADDS OR-OPT, UNTIL A
+C              ROUND MAKES NO MOVE OR THE WORK BOUND IS REACHED.
 C     CHANGES: 2026-11-22 FIRST RECONSTRUCTION
 C=======================================================================
       SUBROUTINE CMOPT2
@@ -21,35 +27,47 @@ C     ---- /CMITM/ THE ITEMS OF A TAPE AND THE TOUR THROUGH THEM -------
      1               IORI
 C     ---- /CMTWK/ WORK SPACE OF THE TOUR: GRID, NEIGHBOURS, QUEUE -----
       INTEGER MXPT, MXCEL, MXNB
-      PARAMETER (MXPT = 2 * MXITM, MXCEL = 2 * MXITM, MXNB = 8)
+      PARAMETER (MXPT = 2 * MXITM, MXCEL = 2 * MXITM, MXNB = 10)
       INTEGER NGX, NGY, KGX0, KGY0, KGCS, KDSX, KDSY, KDTX, KDTY,
-     1        KQX(MXPT), KQY(MXPT), KCST(MXCEL + 1), KCCN(MXCEL),
-     2        KCEL(MXPT), KSLT(MXPT), KNB(MXNB, MXPT), KQUE(MXITM),
-     3        LQUE(MXITM)
+     1        KQHD, KQN, KWORK, KWMAX,
+     2        KQX(MXPT), KQY(MXPT), KCST(MXCEL + 1), KCCN(MXCEL),
+     3        KCEL(MXPT), KSLT(MXPT), KNB(MXNB, MXPT), KQUE(MXITM),
+     4        LQUE(MXITM)
       COMMON /CMTWK/ NGX, NGY, KGX0, KGY0, KGCS, KDSX, KDSY, KDTX, KDTY,
-     1               KQX, KQY, KCST, KCCN, KCEL, KSLT, KNB, KQUE, LQUE
+     1               KQHD, KQN, KWORK, KWMAX, KQX, KQY, KCST, KCCN,
+     2               KCEL, KSLT, KNB, KQUE, LQUE
 C     ---- LOCAL -------------------------------------------------------
-      INTEGER IHEAD, ITAIL, NQ, M, IP, J, K, IE, IQ, M2, IA, IB, ISIDE,
-     1        IX1, IY1, IX2, IY2, IX3, IY3, IX4, IY4, NWORK, MXWORK, L
+      INTEGER M, IP, J, K, IE, IQ, M2, IA, IB, ISIDE, LIMP, NROUND,
+     1        NMOVE, IX1, IY1, IX2, IY2, IX3, IY3, IX4, IY4
       DOUBLE PRECISION D1, DQ, GAIN, CMDST
       EXTERNAL CMDST
 C
-C     ---- EVERY ITEM IN THE QUEUE, IN TOUR ORDER ----------------------
+      KWORK = 0
+      KWMAX = 100 * NITM + 100000
+      NROUND = 0
+C     ---- EVERY ITEM IN THE QUEUE, IN TOUR ORDER
+C     --------------------------
+    5 CONTINUE
+      NROUND = NROUND + 1
+      NMOVE = 0
       DO 10 IP = 1, NITM
          KQUE(IP) = ITOUR(IP)
          LQUE(ITOUR(IP)) = 1
    10 CONTINUE
-      IHEAD = 1
-      ITAIL = 0
-      NQ = NITM
-      NWORK = 0
-      MXWORK = 50 * NITM + 100000
-C     ---- TAKE THE NEXT ITEM ------------------------------------------
+      KQHD = 1
+      KQN = NITM
+C     ---- TAKE THE NEXT ITEM
+C     ----------------------------------------------
    20 CONTINUE
-      IF (NQ .EQ. 0 .OR. NWORK .GT. MXWORK) RETURN
-      M = KQUE(IHEAD)
-      IHEAD = MOD(IHEAD, NITM) + 1
-      NQ = NQ - 1
+      IF (KWORK .GT. KWMAX) RETURN
+      IF (KQN .EQ. 0) THEN
+         IF ((NMOVE .EQ. 0 .AND. NROUND .GT. 1) .OR. NROUND .GE. 10)
+     1      RETURN
+         GOTO 5
+      END IF
+      M = KQUE(KQHD)
+      KQHD = MOD(KQHD, NITM) + 1
+      KQN = KQN - 1
       LQUE(M) = 0
    25 CONTINUE
       DO 60 ISIDE = 1, 2
@@ -71,9 +89,13 @@ C           THE MOVE INTO M: EXIT(IP-1) TO ENTRY(IP)
             IF (DQ .GE. D1 - 1.0D-6) GOTO 60
             M2 = (IQ + 1) / 2
 C           IQ MUST BE THE SAME KIND OF END OF ITS ITEM AS IE IS OF M
-            IF (ISIDE .EQ. 1 .AND. IQ .NE. 2 * M2 - IORI(M2)) GOTO 50
-            IF (ISIDE .EQ. 2 .AND. IQ .NE. 2 * M2 - 1 + IORI(M2))
-     1         GOTO 50
+C           (AN ITEM WHOSE ENDS ARE ONE POINT HAS BOTH KINDS THERE)
+            IF (KQX(2*M2) .NE. KQX(2*M2-1) .OR.
+     1          KQY(2*M2) .NE. KQY(2*M2-1)) THEN
+               IF (ISIDE .EQ. 1 .AND. IQ .NE. 2 * M2 - IORI(M2)) GOTO 50
+               IF (ISIDE .EQ. 2 .AND. IQ .NE. 2 * M2 - 1 + IORI(M2))
+     1            GOTO 50
+            END IF
             J = IPOS(M2)
             IA = MIN(IP, J)
             IB = MAX(IP, J)
@@ -89,26 +111,24 @@ C           IQ MUST BE THE SAME KIND OF END OF ITS ITEM AS IE IS OF M
             GAIN = CMDST(IX1, IY1, IX2, IY2) + CMDST(IX3, IY3, IX4, IY4)
      1           - CMDST(IX1, IY1, IX3, IY3) - CMDST(IX2, IY2, IX4, IY4)
             IF (GAIN .LE. 1.0D-6) GOTO 50
-C           ---- TAKE THE MOVE; LOOK AGAIN AT THE FOUR ITEMS CONCERNED -
+C           ---- TAKE THE MOVE; LOOK AGAIN AT THE FOUR ITEMS CONCERNED
+C           ---
             CALL CMTREV(IA + 1, IB)
-            NWORK = NWORK + (IB - IA)
-            DO 40 L = 1, 4
-               IF (L .EQ. 1) J = IA
-               IF (L .EQ. 2) J = IA + 1
-               IF (L .EQ. 3) J = IB
-               IF (L .EQ. 4) J = IB + 1
-               IF (J .LT. 1 .OR. J .GT. NITM) GOTO 40
-               M2 = ITOUR(J)
-               IF (LQUE(M2) .EQ. 1 .OR. M2 .EQ. M) GOTO 40
-               ITAIL = MOD(IHEAD + NQ - 1, NITM) + 1
-               KQUE(ITAIL) = M2
-               LQUE(M2) = 1
-               NQ = NQ + 1
-   40       CONTINUE
-            IF (NWORK .GT. MXWORK) RETURN
+            NMOVE = NMOVE + 1
+            IF (IA .GE. 1) CALL CMQPSH(ITOUR(IA))
+            CALL CMQPSH(ITOUR(IA + 1))
+            CALL CMQPSH(ITOUR(IB))
+            IF (IB .LT. NITM) CALL CMQPSH(ITOUR(IB + 1))
+            IF (KWORK .GT. KWMAX) RETURN
             GOTO 25
    50    CONTINUE
    60 CONTINUE
+C     ---- NO 2-OPT MOVE: TRY MOVING THE ITEM ELSEWHERE
+C     -------------------
+      LIMP = 0
+      IF (NROUND .GT. 1) CALL CMOROP(M, LIMP)
+      NMOVE = NMOVE + LIMP
+      IF (LIMP .EQ. 1 .AND. KWORK .LE. KWMAX) GOTO 25
       GOTO 20
 C     END OF CMOPT2
       END

@@ -56,7 +56,8 @@ C
       DO 5 I = 1, NR
          GRID(I) = ' '
     5 CONTINUE
-C     ---- RUN THE FRAMES, CYCLES UNROLLED, MARKING WHAT IS DRAWN ------
+C     ---- RUN THE FRAMES, CYCLES UNROLLED, MARKING WHAT IS DRAWN
+C     -------
       PX = 0.0D0
       PY = 0.0D0
       NEXE = 0
@@ -109,7 +110,8 @@ C     ---- RUN THE FRAMES, CYCLES UNROLLED, MARKING WHAT IS DRAWN ------
       GOTO 10
    50 CONTINUE
       CALL CMPMRK(GRID, NC, NR, CW, CH, 0.0D0, 0.0D0, '+')
-C     ---- PRINT IT ----------------------------------------------------
+C     ---- PRINT IT
+C     ---------------------------------------------------------
       CALL CMFMM(NINT(CW), S1, L1)
       CALL CMFMM(NINT(CH), S2, L2)
       CALL DVPRNT(' ')

@@ -28,9 +28,10 @@ C     ---- /TZPKG/ THE PACKAGE: P CARD PARAMETERS, ITS CARD IMAGES ---
       INTEGER MXCRD
       PARAMETER (MXCRD = 200000)
       INTEGER LPKG, ICFST, NPCRD, NPERR, LECHO, IPCRD, LGEOM,
-     1        IX0, IY0, IWT(3), IDMAX, ISCN, ISCD, ICODE, IORD
+     1        IX0, IY0, IWT(3), IDMAX, ISCN, ISCD, ICODE, IORD, IFMAX
       COMMON /TZPKG/ LPKG, ICFST, NPCRD, NPERR, LECHO, IPCRD, LGEOM,
-     1               IX0, IY0, IWT, IDMAX, ISCN, ISCD, ICODE, IORD
+     1               IX0, IY0, IWT, IDMAX, ISCN, ISCD, ICODE, IORD,
+     2               IFMAX
       CHARACTER*18 PKNAME
       CHARACTER*24 PKFILE
       CHARACTER*80 CIMG(MXCRD)
@@ -68,6 +69,7 @@ C     ---- A NEW PACKAGE: DEFAULTS OF THE P CARD (SPEC 5.3) ------------
       ISCD = 1
       ICODE = 1
       IORD = 1
+      IFMAX = 0
       NMAN = 0
       CALL TZGCLR
 C     ---- THE FILE NAME -----------------------------------------------

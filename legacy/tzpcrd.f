@@ -8,7 +8,10 @@ C     COLUMNS  11-20 X0, 21-30 Y0 (F10.2) THE START POINT ON THE FIELD
 C              31-38 W1, 39-46 W2, 47-54 W3 (F8.2) TOOLS OF THE SMALL-
 C              PAD, LARGE-PAD AND CONDUCTOR TAPES; 55-62 DMAX (F8.2)
 C              63-65 / 66-68 SCALE N / D (I3); 70 CODE 8 OR K;
-C              71 ORDER O (OPTIMISED) OR D (DECK ORDER)
+C              71 ORDER O (OPTIMISED) OR D (DECK ORDER); 3-10 FMAX (I8)
+C              THE LONGEST STRAIGHT MOVE OF ONE FRAME IN PULSES OF 0.01
+C              MM, BLANK = NO LIMIT: LONGER MOVES ARE SPLIT (SEED 004,
+C              A COUNTER OF N PULSES MOVES AT MOST N-1 IN A FRAME)
 C     CARD    (INPUT)  CHARACTER*80  THE P CARD
 C     CHANGES: 2026-11-22 FIRST RECONSTRUCTION
 C=======================================================================
@@ -30,9 +33,10 @@ C     ---- /TZPKG/ THE PACKAGE: P CARD PARAMETERS, ITS CARD IMAGES ---
       INTEGER MXCRD
       PARAMETER (MXCRD = 200000)
       INTEGER LPKG, ICFST, NPCRD, NPERR, LECHO, IPCRD, LGEOM,
-     1        IX0, IY0, IWT(3), IDMAX, ISCN, ISCD, ICODE, IORD
+     1        IX0, IY0, IWT(3), IDMAX, ISCN, ISCD, ICODE, IORD, IFMAX
       COMMON /TZPKG/ LPKG, ICFST, NPCRD, NPERR, LECHO, IPCRD, LGEOM,
-     1               IX0, IY0, IWT, IDMAX, ISCN, ISCD, ICODE, IORD
+     1               IX0, IY0, IWT, IDMAX, ISCN, ISCD, ICODE, IORD,
+     2               IFMAX
       CHARACTER*18 PKNAME
       CHARACTER*24 PKFILE
       CHARACTER*80 CIMG(MXCRD)
@@ -119,6 +123,15 @@ C     ---- THE SCALE MUST BE ONE OF THE MACHINE'S ----------------------
      1      // 'MACHINE''S: 1:100 1:10 1:5 1:2 1:1 2:1 5:1 50:1 100:1')
          ISCN = 1
          ISCD = 1
+      END IF
+C     ---- THE FRAME LIMIT ---------------------------------------------
+      IOK = 1
+      CALL CMFLD('TENZOR', NCARD, CARD, 3, 10, 0, 0, 'FMAX', IFMAX, LB,
+     1           IOK)
+      IF (IOK .EQ. 1 .AND. IFMAX .LT. 0) THEN
+         CALL CMERR('TENZOR', NCARD, 3, 'FMAX IN COLS 3-10 IS NEGATIVE;'
+     1      // ' BLANK FOR NO LIMIT, ELSE THE LONGEST MOVE OF A FRAME')
+         IFMAX = 0
       END IF
 C     ---- CODE AND ORDER ----------------------------------------------
       IF (CARD(70:70) .EQ. ' ' .OR. CARD(70:70) .EQ. '8') THEN

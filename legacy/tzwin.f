@@ -15,9 +15,10 @@ C     ---- /TZPKG/ THE PACKAGE: P CARD PARAMETERS, ITS CARD IMAGES ---
       INTEGER MXCRD
       PARAMETER (MXCRD = 200000)
       INTEGER LPKG, ICFST, NPCRD, NPERR, LECHO, IPCRD, LGEOM,
-     1        IX0, IY0, IWT(3), IDMAX, ISCN, ISCD, ICODE, IORD
+     1        IX0, IY0, IWT(3), IDMAX, ISCN, ISCD, ICODE, IORD, IFMAX
       COMMON /TZPKG/ LPKG, ICFST, NPCRD, NPERR, LECHO, IPCRD, LGEOM,
-     1               IX0, IY0, IWT, IDMAX, ISCN, ISCD, ICODE, IORD
+     1               IX0, IY0, IWT, IDMAX, ISCN, ISCD, ICODE, IORD,
+     2               IFMAX
       CHARACTER*18 PKNAME
       CHARACTER*24 PKFILE
       CHARACTER*80 CIMG(MXCRD)
@@ -64,7 +65,8 @@ C
       DO 5 K = 1, 4
          PWIN(K) = 0.0D0
     5 CONTINUE
-C     ---- THE M FRAMES OF EACH TAPE -----------------------------------
+C     ---- THE M FRAMES OF EACH TAPE
+C     ------------------------------------
       DO 20 IU = 1, 3
          NFR = 0
          DO 10 I = 1, MIN(NMAN, MXMAN)
@@ -76,7 +78,8 @@ C     ---- THE M FRAMES OF EACH TAPE -----------------------------------
          CALL TZWADD(BBOX(2), BBOX(4), 0.0D0)
    20 CONTINUE
       NFR = 0
-C     ---- PADS AND ROWS -----------------------------------------------
+C     ---- PADS AND ROWS
+C     -------------------------------------------------
       DO 30 I = 1, NPAD
          IH = MAX(KPW(I), KPH(I)) / 2
          X1 = KPX(I)
@@ -86,13 +89,15 @@ C     ---- PADS AND ROWS -----------------------------------------------
          CALL TZWADD(X1, Y1, DBLE(IH))
          CALL TZWADD(X2, Y2, DBLE(IH))
    30 CONTINUE
-C     ---- CONDUCTORS --------------------------------------------------
+C     ---- CONDUCTORS
+C     ----------------------------------------------------
       DO 50 I = 1, NCON
          DO 40 K = KCV1(I), KCV2(I)
             CALL TZWADD(DBLE(KVX(K)), DBLE(KVY(K)), KCW(I) / 2.0D0)
    40    CONTINUE
    50 CONTINUE
-C     ---- CIRCLES AND ARCS: THEIR WHOLE CIRCLE ------------------------
+C     ---- CIRCLES AND ARCS: THEIR WHOLE CIRCLE
+C     ---------------------------
       DO 60 I = 1, NARC
          R = SQRT(DBLE(KAX(I))**2 + DBLE(KAY(I))**2) + IWT(3) / 2.0D0
          CALL TZWADD(DBLE(KAXS(I) - KAX(I)), DBLE(KAYS(I) - KAY(I)), R)

@@ -1,13 +1,17 @@
 #!/usr/bin/env bash
 # Set up everything the project needs, once; fast when all is already there.
 #   - gfortran (Debian package) compiles the FORTRAN 77 and the modern Fortran;
+#   - gerbv (Debian package) renders em703's Gerber output for a cross-check;
 #   - .venv/ holds fpm and the Python packages of requirements.txt.
+# LinuxCNC's rs274 interpreter (Debian package linuxcnc-uspace) is optional and
+# large: the G-code cross-check runs when it is installed (see README.md).
 # Called by `make demo` and `make test`; safe to run again at any time.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
 apt_packages=()
 command -v gfortran >/dev/null 2>&1 || apt_packages+=(gfortran)
+command -v gerbv >/dev/null 2>&1 || apt_packages+=(gerbv)
 python3 -c 'import venv, ensurepip' >/dev/null 2>&1 || apt_packages+=(python3-venv)
 
 if [ ${#apt_packages[@]} -gt 0 ]; then

@@ -81,6 +81,10 @@ CASES = [
      6, 51, "ARC END IS OFF ITS CIRCLE"),
     ("arc-start-is-end", [P, card(c1="A", c2="+", c31=f10("5.00"), c51=f10("5.00"))], 6, 51,
      "ENDS WHERE IT STARTS"),
+    # found by fuzzing: radius 0.01 mm, end at the centre, within the tolerance; drawn
+    # from that end it would be an arc without X or Y
+    ("arc-end-is-centre", [P, card(c1="A", c2="+", c31=f10("0.01"))], 6, 51,
+     "THE END OF THE ARC IS ITS CENTRE"),
     ("coordinate-beyond-any-field", [P, card(c1="D", c11=f10("130000.00"), c31="    1.00")], 6, 11,
      "OFF THE FIELD AT EVERY SCALE"),
     ("control-card-inside", [P, "*NAME X"], 6, 1, "CONTROL CARD INSIDE A PACKAGE"),

@@ -52,3 +52,14 @@ def test_filling_md_row_excerpt_is_the_demo_tape(run_tenzor):
     assert proc.returncode == 0
     frames = (out / "LOGIC-CARD-A-small.txt").read_text().splitlines()
     assert frames[1:1 + len(quoted)] == quoted
+
+
+def test_filling_pictures_are_current(tmp_path):
+    """docs/img/filling*.svg are what scripts/pictures.sh draws now."""
+    import subprocess
+    subprocess.run(["bash", str(ROOT / "scripts" / "pictures.sh"), str(tmp_path)],
+                   check=True, capture_output=True, cwd=ROOT)
+    for fresh in sorted(tmp_path.glob("filling*.svg")):
+        kept = ROOT / "docs" / "img" / fresh.name
+        assert kept.exists(), f"{kept} is missing: run scripts/pictures.sh"
+        assert kept.read_bytes() == fresh.read_bytes(), f"{kept} is stale: run scripts/pictures.sh"

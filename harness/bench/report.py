@@ -1,0 +1,350 @@
+"""The benchmark's outputs: CSV, the table, the targets, and an SVG plot.
+
+The SVG is written by hand (no plotting library): four small log-scale
+charts of the CSV's figures against the board size.
+"""
+
+from __future__ import annotations
+
+import csv
+import math
+from collections.abc import Sequence
+from pathlib import Path
+
+#: CSV columns, in order, with what each holds.
+COLUMNS: dict[str, str] = {
+    "board": "board name (distribution and pads)",
+    "dist": "uniform, clustered or grid",
+    "pads": "pads on the board",
+    "cards": "cards of the deck",
+    "items": "tour items of the two pad tapes (D cards)",
+    "conductors": "L cards",
+    "tenzor_s": "TENZOR deck to tapes, wall seconds, minimum of the repeats",
+    "tenzor_s_max": "the slowest repeat",
+    "tenzor_cpu_s": "TENZOR's CPU time (user + system), minimum of the repeats",
+    "repeats": "runs timed (at least --repeats; short runs until --min-seconds, at most 30)",
+    "peak_rss_mb": "TENZOR's peak resident set size, MiB (VmHWM)",
+    "frames": "frames on the three tapes",
+    "rows": "rows on the three tapes (tape length at 2.54 mm a row)",
+    "frames_per_s": "frames / tenzor_s",
+    "rows_per_s": "rows / tenzor_s",
+    "drawn_m": "length drawn with the tool down, three tapes (simulated), m",
+    "travel_m": "length travelled with the tool raised, three tapes (simulated), m",
+    "run_min": "estimated run time of the three tapes (5.5 m/min, arcs 1.5), min",
+    "cyc_small": "small-pad tape: rows as punched / rows with every cycle unrolled",
+    "cyc_large": "the same, large-pad tape",
+    "cyc_cond": "the same, conductor tape",
+    "cyc_pads": "the same, the two pad tapes together",
+    "tour_deck_m": "pad tapes: tour through the item centres in deck order, m",
+    "tour_nn_m": "the same, plain nearest neighbour",
+    "tour_tenzor_m": "the same, TENZOR's order read back from its tapes",
+    "tour_ref_m": "the same, LKH-3 (elkai) reference",
+    "tenzor_vs_ref": "tour_tenzor_m / tour_ref_m",
+    "nn_vs_ref": "tour_nn_m / tour_ref_m",
+    "ref_s": "LKH-3 seconds (both pad tapes)",
+    "nn_s": "nearest neighbour seconds (Python)",
+    "time_vs_ref": "tenzor_s / ref_s",
+    "pad_travel_m": "TENZOR's raised travel on the two pad tapes (simulated: also inside rows), m",
+}
+
+#: Targets of issue 7.
+TARGET_SECONDS_100K = 2.0
+TARGET_TOUR_RATIO = 1.05
+TARGET_TIME_RATIO = 0.10
+TARGET_CYCLE_RATIO = 0.60
+TARGET_RSS_MB_100K = 200.0
+
+
+def _fmt(value: object) -> str:
+    """A CSV field: six significant digits for a float, blank for none."""
+    if value is None or value == "":
+        return ""
+    if isinstance(value, float):
+        return "" if math.isnan(value) else format(value, ".6g")
+    return str(value)
+
+
+def write_csv(rows: Sequence[dict], path: Path) -> None:
+    with path.open("w", newline="", encoding="ascii") as f:
+        w = csv.writer(f, lineterminator="\n")
+        w.writerow(COLUMNS)
+        for r in rows:
+            w.writerow([_fmt(r.get(c)) for c in COLUMNS])
+
+
+def read_csv(path: Path) -> list[dict[str, str]]:
+    with path.open(newline="", encoding="ascii") as f:
+        return list(csv.DictReader(f))
+
+
+#: Columns of the printed table: (heading, key, format).
+TABLE: tuple[tuple[str, str, str], ...] = (
+    ("board", "board", "s"), ("pads", "pads", "d"), ("items", "items", "d"),
+    ("TENZOR s", "tenzor_s", ".3f"), ("CPU s", "tenzor_cpu_s", ".3f"),
+    ("RSS MB", "peak_rss_mb", ".1f"),
+    ("frames/s", "frames_per_s", ".3g"), ("rows/s", "rows_per_s", ".3g"),
+    ("travel m", "travel_m", ".1f"), ("run min", "run_min", ".1f"),
+    ("cyc S", "cyc_small", ".2f"), ("cyc L", "cyc_large", ".2f"),
+    ("cyc C", "cyc_cond", ".2f"),
+    ("deck m", "tour_deck_m", ".1f"), ("NN m", "tour_nn_m", ".2f"),
+    ("TENZOR m", "tour_tenzor_m", ".2f"), ("LKH m", "tour_ref_m", ".2f"),
+    ("T/LKH", "tenzor_vs_ref", ".3f"), ("NN/LKH", "nn_vs_ref", ".3f"),
+    ("LKH s", "ref_s", ".3g"), ("Ts/LKHs", "time_vs_ref", ".4f"),
+)
+
+
+def _cell(value: object, fmt: str) -> str:
+    if value is None or value == "" or (isinstance(value, float) and math.isnan(value)):
+        return "-"
+    if fmt == "s":
+        return str(value)
+    if fmt == "d":
+        return str(int(float(value)))
+    v = float(value)
+    if fmt.endswith("g") and v >= 1000:
+        return f"{v:.3g}".replace("e+0", "e").replace("e+", "e")
+    return format(v, fmt)
+
+
+def table(rows: Sequence[dict], markdown: bool = False) -> str:
+    heads = [h for h, _, _ in TABLE]
+    body = [[_cell(r.get(k), f) for _, k, f in TABLE] for r in rows]
+    if markdown:
+        out = ["| " + " | ".join(heads) + " |",
+               "|" + "|".join("---" if i == 0 else "--:" for i in range(len(heads))) + "|"]
+        out += ["| " + " | ".join(line) + " |" for line in body]
+        return "\n".join(out) + "\n"
+    widths = [max(len(h), *(len(b[i]) for b in body)) if body else len(h)
+              for i, h in enumerate(heads)]
+    lines = ["  ".join(h.rjust(w) if i else h.ljust(w) for i, (h, w) in enumerate(zip(heads, widths)))]
+    lines.append("  ".join("-" * w for w in widths))
+    for b in body:
+        lines.append("  ".join(c.rjust(w) if i else c.ljust(w)
+                               for i, (c, w) in enumerate(zip(b, widths))))
+    return "\n".join(lines) + "\n"
+
+
+def _num(r: dict, key: str) -> float | None:
+    v = r.get(key)
+    if v is None or v == "":
+        return None
+    v = float(v)
+    return None if math.isnan(v) else v
+
+
+def targets(rows: Sequence[dict]) -> list[tuple[str, bool | None, str]]:
+    """Each target of issue 7: (what, met (None: not measured), the figures)."""
+    out: list[tuple[str, bool | None, str]] = []
+    big = [r for r in rows if int(float(r["pads"])) >= 100000]
+    if big:
+        worst = max(big, key=lambda r: _num(r, "tenzor_s"))
+        s = _num(worst, "tenzor_s")
+        out.append((f"100 000 pads deck to tapes < {TARGET_SECONDS_100K:g} s",
+                    all(_num(r, "tenzor_s") < TARGET_SECONDS_100K for r in big),
+                    ", ".join(f"{r['board']} {_num(r, 'tenzor_s'):.2f} s" for r in big)
+                    + f" (worst {s / TARGET_SECONDS_100K:.0%} of the limit)"))
+    else:
+        out.append((f"100 000 pads deck to tapes < {TARGET_SECONDS_100K:g} s", None,
+                    "no 100 000-pad board in this run"))
+    mid = [r for r in rows if 1000 <= int(float(r["pads"])) <= 10000]
+    have = [r for r in mid if _num(r, "tenzor_vs_ref") is not None]
+    if have:
+        worst = max(have, key=lambda r: _num(r, "tenzor_vs_ref"))
+        out.append((f"travel within {TARGET_TOUR_RATIO - 1:.0%} of LKH-3, 1 000-10 000 pads",
+                    all(_num(r, "tenzor_vs_ref") <= TARGET_TOUR_RATIO for r in have)
+                    and len(have) == len(mid),
+                    ", ".join(f"{r['board']} {_num(r, 'tenzor_vs_ref'):.3f}" for r in have)
+                    + f" (worst {worst['board']}: +{_num(worst, 'tenzor_vs_ref') - 1:.1%})"))
+        worst = max(have, key=lambda r: _num(r, "time_vs_ref"))
+        out.append((f"TENZOR's time at most {TARGET_TIME_RATIO:g} of LKH-3's, 1 000-10 000 pads",
+                    all(_num(r, "time_vs_ref") <= TARGET_TIME_RATIO for r in have),
+                    ", ".join(f"{r['board']} {_num(r, 'time_vs_ref'):.4f}" for r in have)
+                    + f" (worst {worst['board']})"))
+    else:
+        out.append((f"travel within {TARGET_TOUR_RATIO - 1:.0%} of LKH-3, 1 000-10 000 pads",
+                    None, "no LKH-3 reference on a board of 1 000-10 000 pads in this run"))
+    grid = [r for r in rows if r["dist"] == "grid"]
+    if grid:
+        out.append((f"grid boards: the pad tapes with cycles <= {TARGET_CYCLE_RATIO:.0%} "
+                    "of the same tapes unrolled",
+                    all(_num(r, "cyc_pads") <= TARGET_CYCLE_RATIO for r in grid),
+                    ", ".join(f"{r['board']} {_num(r, 'cyc_pads'):.2f} "
+                              f"(S {_num(r, 'cyc_small'):.2f}, L {_num(r, 'cyc_large'):.2f})"
+                              for r in grid)))
+        out.append(("grid boards: the conductor tape with cycles <= "
+                    f"{TARGET_CYCLE_RATIO:.0%} of the same tape unrolled",
+                    all(_num(r, "cyc_cond") <= TARGET_CYCLE_RATIO for r in grid),
+                    ", ".join(f"{r['board']} {_num(r, 'cyc_cond'):.2f}" for r in grid)))
+    if big:
+        worst = max(_num(r, "peak_rss_mb") for r in big)
+        out.append((f"peak memory < {TARGET_RSS_MB_100K:g} MB at 100 000 pads",
+                    worst < TARGET_RSS_MB_100K,
+                    ", ".join(f"{r['board']} {_num(r, 'peak_rss_mb'):.1f} MB" for r in big)))
+    for dist in sorted({r["dist"] for r in rows}):
+        pts = sorted((int(float(r["pads"])), _num(r, "peak_rss_mb"))
+                     for r in rows if r["dist"] == dist)
+        if len(pts) >= 3:
+            steps = [(b[1] - a[1]) / (b[0] - a[0]) * 1000 for a, b in zip(pts, pts[1:])]
+            out.append((f"memory growth, {dist}", None,
+                        "MB per 1 000 pads between sizes: "
+                        + ", ".join(f"{s:.2f}" for s in steps)
+                        + f" (baseline {pts[0][1]:.1f} MB at {pts[0][0]} pads)"))
+    return out
+
+
+def targets_text(rows: Sequence[dict]) -> str:
+    lines = []
+    for what, met, figures in targets(rows):
+        mark = {True: "MET   ", False: "MISSED", None: "      "}[met]
+        lines.append(f"{mark} {what}: {figures}")
+    return "\n".join(lines) + "\n"
+
+
+# ---------------------------------------------------------------------------
+# SVG.
+# ---------------------------------------------------------------------------
+COLOURS = {"uniform": "#1f77b4", "clustered": "#d62728", "grid": "#2ca02c"}
+
+
+def _esc(text: str) -> str:
+    return text.replace("&", "&amp;").replace("<", "&lt;").replace(">", "&gt;")
+
+
+class _Chart:
+    """One log-x chart in a box of the SVG."""
+
+    def __init__(self, x: float, y: float, w: float, h: float, title: str,
+                 xs: Sequence[float], ylo: float, yhi: float, ylog: bool, ylabel: str):
+        self.x, self.y, self.w, self.h = x, y, w, h
+        self.xlo, self.xhi = math.log10(min(xs)) - 0.15, math.log10(max(xs)) + 0.15
+        self.ylog = ylog
+        self.ylo, self.yhi = (math.log10(ylo), math.log10(yhi)) if ylog else (ylo, yhi)
+        self.parts = [f'<text x="{x + w / 2:.1f}" y="{y - 8:.1f}" text-anchor="middle" '
+                      f'font-size="13" font-weight="bold">{_esc(title)}</text>',
+                      f'<rect x="{x}" y="{y}" width="{w}" height="{h}" fill="none" stroke="#444"/>',
+                      f'<text x="{x - 42:.1f}" y="{y + h / 2:.1f}" font-size="11" '
+                      f'transform="rotate(-90 {x - 42:.1f} {y + h / 2:.1f})" '
+                      f'text-anchor="middle">{_esc(ylabel)}</text>']
+        for v in xs:
+            px = self.px(v)
+            self.parts.append(f'<line x1="{px:.1f}" y1="{y + h}" x2="{px:.1f}" y2="{y + h + 4}" stroke="#444"/>')
+            self.parts.append(f'<text x="{px:.1f}" y="{y + h + 16}" font-size="10" '
+                              f'text-anchor="middle">{v:,}</text>')
+        self.parts.append(f'<text x="{x + w / 2:.1f}" y="{y + h + 30}" font-size="11" '
+                          'text-anchor="middle">pads</text>')
+        for t in self._yticks():
+            py = self.py(t)
+            label = f"{t:g}"
+            self.parts.append(f'<line x1="{x - 4}" y1="{py:.1f}" x2="{x + w}" y2="{py:.1f}" '
+                              'stroke="#ddd"/>')
+            self.parts.append(f'<text x="{x - 6}" y="{py + 3:.1f}" font-size="10" '
+                              f'text-anchor="end">{label}</text>')
+
+    def _yticks(self) -> list[float]:
+        if self.ylog:
+            return [10.0 ** e for e in range(math.floor(self.ylo), math.ceil(self.yhi) + 1)
+                    if self.ylo - 1e-9 <= e <= self.yhi + 1e-9]
+        span = self.yhi - self.ylo
+        step = 10 ** math.floor(math.log10(span / 4))
+        for m in (1, 2, 5, 10):
+            if span / (step * m) <= 6:
+                step *= m
+                break
+        first = math.ceil(self.ylo / step) * step
+        return [first + k * step for k in range(int((self.yhi - first) / step + 1e-9) + 1)]
+
+    def px(self, v: float) -> float:
+        return self.x + (math.log10(v) - self.xlo) / (self.xhi - self.xlo) * self.w
+
+    def py(self, v: float) -> float:
+        t = math.log10(max(v, 1e-12)) if self.ylog else v
+        t = min(max(t, self.ylo), self.yhi)
+        return self.y + self.h - (t - self.ylo) / (self.yhi - self.ylo) * self.h
+
+    def series(self, pts: Sequence[tuple[float, float]], colour: str, dashed: bool = False,
+               marker: str = "circle") -> None:
+        if not pts:
+            return
+        path = " ".join(f"{self.px(a):.1f},{self.py(b):.1f}" for a, b in pts)
+        dash = ' stroke-dasharray="4 3"' if dashed else ""
+        self.parts.append(f'<polyline points="{path}" fill="none" stroke="{colour}" '
+                          f'stroke-width="1.5"{dash}/>')
+        for a, b in pts:
+            if marker == "circle":
+                self.parts.append(f'<circle cx="{self.px(a):.1f}" cy="{self.py(b):.1f}" r="3" '
+                                  f'fill="{colour}"/>')
+            else:
+                self.parts.append(f'<rect x="{self.px(a) - 3:.1f}" y="{self.py(b) - 3:.1f}" '
+                                  f'width="6" height="6" fill="white" stroke="{colour}"/>')
+
+    def limit(self, value: float, label: str) -> None:
+        py = self.py(value)
+        self.parts.append(f'<line x1="{self.x}" y1="{py:.1f}" x2="{self.x + self.w}" '
+                          f'y2="{py:.1f}" stroke="#000" stroke-dasharray="6 3"/>')
+        self.parts.append(f'<text x="{self.x + self.w - 4}" y="{py - 4:.1f}" font-size="10" '
+                          f'text-anchor="end">{_esc(label)}</text>')
+
+
+def svg(rows: Sequence[dict]) -> str:
+    """Four charts: TENZOR's time, its peak memory, the travel against
+    LKH-3 and the tape length against the unrolled tape, by board size."""
+    rows = [r for r in rows if r.get("pads")]
+    xs = sorted({int(float(r["pads"])) for r in rows}) or [100]
+    dists = [d for d in COLOURS if any(r["dist"] == d for r in rows)]
+
+    def pts(dist: str, key: str) -> list[tuple[float, float]]:
+        out = []
+        for r in rows:
+            v = _num(r, key)
+            if r["dist"] == dist and v is not None and v > 0:
+                out.append((int(float(r["pads"])), v))
+        return sorted(out)
+
+    def span(keys: Sequence[str], lo: float, hi: float, log: bool) -> tuple[float, float]:
+        vals = [v for d in dists for k in keys for _, v in pts(d, k)] + [lo, hi]
+        a, b = min(vals), max(vals)
+        if log:
+            return 10 ** math.floor(math.log10(a)), 10 ** math.ceil(math.log10(b))
+        pad = (b - a) * 0.08 or 0.05
+        return a - pad, b + pad
+
+    W, H, cw, ch = 980, 700, 360, 220
+    charts = []
+    lo, hi = span(["tenzor_s"], TARGET_SECONDS_100K, TARGET_SECONDS_100K, True)
+    c = _Chart(90, 60, cw, ch, "TENZOR, deck to tapes (min of repeats)", xs, lo, hi, True,
+               "seconds")
+    for d in dists:
+        c.series(pts(d, "tenzor_s"), COLOURS[d])
+    c.limit(TARGET_SECONDS_100K, "target at 100 000 pads: 2 s")
+    charts.append(c)
+    lo, hi = span(["peak_rss_mb"], 0, TARGET_RSS_MB_100K, False)
+    c = _Chart(560, 60, cw, ch, "TENZOR, peak resident memory", xs, max(lo, 0), hi, False, "MiB")
+    for d in dists:
+        c.series(pts(d, "peak_rss_mb"), COLOURS[d])
+    c.limit(TARGET_RSS_MB_100K, "target at 100 000 pads: 200 MB")
+    charts.append(c)
+    lo, hi = span(["tenzor_vs_ref", "nn_vs_ref"], 1.0, TARGET_TOUR_RATIO, False)
+    c = _Chart(90, 390, cw, ch, "pad tapes' tour / LKH-3 (filled: TENZOR, open: NN)", xs,
+               lo, hi, False, "ratio to LKH-3")
+    for d in dists:
+        c.series(pts(d, "tenzor_vs_ref"), COLOURS[d])
+        c.series(pts(d, "nn_vs_ref"), COLOURS[d], dashed=True, marker="square")
+    c.limit(TARGET_TOUR_RATIO, "target: 1.05")
+    charts.append(c)
+    lo, hi = span(["cyc_small", "cyc_large"], 0.0, 1.0, False)
+    c = _Chart(560, 390, cw, ch, "tape rows / rows unrolled (filled: small, open: large)", xs,
+               max(lo, 0), min(hi, 1.05), False, "ratio")
+    for d in dists:
+        c.series(pts(d, "cyc_small"), COLOURS[d])
+        c.series(pts(d, "cyc_large"), COLOURS[d], dashed=True, marker="square")
+    c.limit(TARGET_CYCLE_RATIO, "target on grid boards: 0.60")
+    charts.append(c)
+    legend = []
+    for k, d in enumerate(dists):
+        lx = 90 + k * 140
+        legend.append(f'<rect x="{lx}" y="{H - 22}" width="12" height="12" fill="{COLOURS[d]}"/>')
+        legend.append(f'<text x="{lx + 18}" y="{H - 12}" font-size="12">{d}</text>')
+    body = "\n".join(p for c in charts for p in c.parts) + "\n" + "\n".join(legend)
+    return (f'<svg xmlns="http://www.w3.org/2000/svg" width="{W}" height="{H}" '
+            f'viewBox="0 0 {W} {H}" font-family="sans-serif">\n'
+            f'<rect width="{W}" height="{H}" fill="white"/>\n{body}\n</svg>\n')

@@ -1,0 +1,142 @@
+C=======================================================================
+C     CMOROP - OR-OPT: MOVE ONE TO THREE ITEMS ELSEWHERE IN THE TOUR
+C                                                               (SHARED)
+C     SOURCE:  RECONSTRUCTED (SEE CMTOUR). THE SEGMENT S OF K ITEMS
+C              STARTING AT ITEM M (K = 1, 2, 3) IS TAKEN OUT AND PUT
+C              BETWEEN THE ITEMS AT PLACES C AND C+1, DRAWN FORWARD OR
+C              BACKWARD, WHEN THAT SHORTENS THE TOUR. C IS FOUND FROM
+C              THE NEAREST ENDS (KNB) OF THE TWO ENDS OF S. THE MOVE IS
+C              MADE BY THREE REVERSALS OF THE TOUR.
+C     M       (INPUT)  INTEGER  THE FIRST ITEM OF THE SEGMENT
+C     LIMP    (OUTPUT) INTEGER  1 IF THE TOUR WAS CHANGED, ELSE 0
+C     CHANGES: 2026-11-22 FIRST RECONSTRUCTION
+C=======================================================================
+      SUBROUTINE CMOROP(M, LIMP)
+      IMPLICIT NONE
+      INTEGER M, LIMP
+C     ---- /CMITM/ THE ITEMS OF A TAPE AND THE TOUR THROUGH THEM -------
+      INTEGER MXITM
+      PARAMETER (MXITM = 300000)
+      INTEGER NITM, IKND(MXITM), IREF(MXITM), IEX(MXITM), IEY(MXITM),
+     1        IXX(MXITM), IXY(MXITM), ITOUR(MXITM), IPOS(MXITM),
+     2        IORI(MXITM)
+      COMMON /CMITM/ NITM, IKND, IREF, IEX, IEY, IXX, IXY, ITOUR, IPOS,
+     1               IORI
+C     ---- /CMTWK/ WORK SPACE OF THE TOUR: GRID, NEIGHBOURS, QUEUE -----
+      INTEGER MXPT, MXCEL, MXNB
+      PARAMETER (MXPT = 2 * MXITM, MXCEL = 2 * MXITM, MXNB = 10)
+      INTEGER NGX, NGY, KGX0, KGY0, KGCS, KDSX, KDSY, KDTX, KDTY,
+     1        KQHD, KQN, KWORK, KWMAX,
+     2        KQX(MXPT), KQY(MXPT), KCST(MXCEL + 1), KCCN(MXCEL),
+     3        KCEL(MXPT), KSLT(MXPT), KNB(MXNB, MXPT), KQUE(MXITM),
+     4        LQUE(MXITM)
+      COMMON /CMTWK/ NGX, NGY, KGX0, KGY0, KGCS, KDSX, KDSY, KDTX, KDTY,
+     1               KQHD, KQN, KWORK, KWMAX, KQX, KQY, KCST, KCCN,
+     2               KCEL, KSLT, KNB, KQUE, LQUE
+C     ---- LOCAL -------------------------------------------------------
+      INTEGER I, J2, K, L, IEND, ID, IQ, M2, J, IC, IREV, NB, IBC,
+     1        IBREV, IXS, IYS, IXE, IYE, IXP, IYP, IXN, IYN, IXC, IYC,
+     2        IXD, IYD, MS(7)
+      LOGICAL LEXIT, LONE
+      INTEGER IROLE
+      DOUBLE PRECISION REM, ADD, GAIN, BEST, CMDST
+      EXTERNAL CMDST
+C
+      LIMP = 0
+      I = IPOS(M)
+      DO 50 K = 1, 3
+         J2 = I + K - 1
+         IF (J2 .GT. NITM) RETURN
+C        THE ENDS OF S, AND WHAT IS AROUND IT NOW
+         CALL CMEND(I, 2, IXS, IYS)
+         CALL CMEND(J2, 1, IXE, IYE)
+         CALL CMEND(I - 1, 1, IXP, IYP)
+         CALL CMEND(J2 + 1, 2, IXN, IYN)
+         REM = CMDST(IXP, IYP, IXS, IYS) + CMDST(IXE, IYE, IXN, IYN)
+     1       - CMDST(IXP, IYP, IXN, IYN)
+         IF (REM .LE. 1.0D-6) GOTO 50
+         BEST = 1.0D-6
+         IBC = -1
+         IBREV = 0
+C        ---- CANDIDATES FROM THE NEAREST ENDS OF BOTH ENDS OF S
+C        ---------
+         DO 40 IEND = 1, 2
+            IF (IEND .EQ. 1) THEN
+               ID = 2 * ITOUR(I) - 1 + IORI(ITOUR(I))
+            ELSE
+               ID = 2 * ITOUR(J2) - IORI(ITOUR(J2))
+            END IF
+            DO 30 NB = 1, MXNB
+               IQ = KNB(NB, ID)
+               IF (IQ .EQ. 0) GOTO 40
+               M2 = (IQ + 1) / 2
+               J = IPOS(M2)
+               IF (J .GE. I .AND. J .LE. J2) GOTO 30
+               LEXIT = IQ .EQ. 2 * M2 - IORI(M2)
+               LONE = KQX(2*M2) .EQ. KQX(2*M2-1) .AND.
+     1                KQY(2*M2) .EQ. KQY(2*M2-1)
+               IROLE = 0
+C              WHERE IT GOES, AND WHETHER S IS TURNED ROUND (AN ITEM
+C              WHOSE ENDS ARE ONE POINT IS TRIED IN BOTH ROLES)
+   25          CONTINUE
+               IF (LONE) LEXIT = IROLE .EQ. 0
+               IF (LEXIT) THEN
+                  IC = J
+               ELSE
+                  IC = J - 1
+               END IF
+               IREV = 0
+               IF ((IEND .EQ. 1) .NEQV. LEXIT) IREV = 1
+               IF (IC .GE. I - 1 .AND. IC .LE. J2) GOTO 28
+               CALL CMEND(IC, 1, IXC, IYC)
+               CALL CMEND(IC + 1, 2, IXD, IYD)
+               IF (IREV .EQ. 0) THEN
+                  ADD = CMDST(IXC, IYC, IXS, IYS) +
+     1                  CMDST(IXE, IYE, IXD, IYD)
+               ELSE
+                  ADD = CMDST(IXC, IYC, IXE, IYE) +
+     1                  CMDST(IXS, IYS, IXD, IYD)
+               END IF
+               ADD = ADD - CMDST(IXC, IYC, IXD, IYD)
+               GAIN = REM - ADD
+               IF (GAIN .GT. BEST) THEN
+                  BEST = GAIN
+                  IBC = IC
+                  IBREV = IREV
+               END IF
+   28          CONTINUE
+               IROLE = IROLE + 1
+               IF (LONE .AND. IROLE .EQ. 1) GOTO 25
+   30       CONTINUE
+   40    CONTINUE
+         IF (IBC .LT. 0) GOTO 50
+C        ---- MAKE THE MOVE; QUEUE THE ITEMS WHOSE NEIGHBOURS CHANGE
+C        -----
+         DO 45 L = 1, 7
+            MS(L) = 0
+   45    CONTINUE
+         IF (I .GT. 1) MS(1) = ITOUR(I - 1)
+         IF (J2 .LT. NITM) MS(2) = ITOUR(J2 + 1)
+         IF (IBC .GE. 1) MS(3) = ITOUR(IBC)
+         IF (IBC .LT. NITM) MS(4) = ITOUR(IBC + 1)
+         DO 46 L = 1, K
+            MS(4 + L) = ITOUR(I + L - 1)
+   46    CONTINUE
+         IF (IBC .GT. J2) THEN
+            IF (IBREV .EQ. 0) CALL CMTREV(I, J2)
+            CALL CMTREV(J2 + 1, IBC)
+            CALL CMTREV(I, IBC)
+         ELSE
+            CALL CMTREV(IBC + 1, I - 1)
+            IF (IBREV .EQ. 0) CALL CMTREV(I, J2)
+            CALL CMTREV(IBC + 1, J2)
+         END IF
+         DO 48 L = 1, 7
+            IF (MS(L) .NE. 0) CALL CMQPSH(MS(L))
+   48    CONTINUE
+         LIMP = 1
+         RETURN
+   50 CONTINUE
+      RETURN
+C     END OF CMOROP
+      END

@@ -1,0 +1,57 @@
+C=======================================================================
+C     CMSPL1 - APPEND A STRAIGHT MOVE, SPLIT TO THE FRAME LIMIT (SHARED)
+C     SOURCE:  SEED 004 (NC TAPE CODES): A MOVE WHOSE PROJECTION ON AN
+C              AXIS EXCEEDS THE LARGEST MOVE OF ONE FRAME IS CUT INTO N
+C              FRAMES; THE END OF FRAME I IS THE POINT I/N OF THE WAY,
+C              ROUNDED TO WHOLE PULSES (HALF A PULSE ROUNDED DOWN), SO
+C              EVERY INTERMEDIATE POINT IS WITHIN ONE PULSE OF THE LINE.
+C              THIS GIVES THE DOCUMENT'S TABLE EXACTLY: 98132, 87647 IN
+C              10 FRAMES OF 9813 OR 9814 AND 8764 OR 8765.
+C     IDX,IDY (INPUT)  INTEGER  THE MOVE, 0.01 MM
+C     K       (INPUT)  INTEGER  10 OR 20
+C     ICRD    (INPUT)  INTEGER  THE CARD, FOR MESSAGES
+C     ICOL    (INPUT)  INTEGER  THE COLUMN
+C     THE LIMIT IS IFMAX OF THE P CARD (0: NO LIMIT).
+C     CHANGES: 2026-11-22 FIRST RECONSTRUCTION
+C=======================================================================
+      SUBROUTINE CMSPL1(IDX, IDY, K, ICRD, ICOL)
+      IMPLICIT NONE
+      INTEGER IDX, IDY, K, ICRD, ICOL
+C     ---- /TZPKG/ THE PACKAGE: P CARD PARAMETERS, ITS CARD IMAGES ---
+      INTEGER MXCRD
+      PARAMETER (MXCRD = 200000)
+      INTEGER LPKG, ICFST, NPCRD, NPERR, LECHO, IPCRD, LGEOM,
+     1        IX0, IY0, IWT(3), IDMAX, ISCN, ISCD, ICODE, IORD, IFMAX
+      COMMON /TZPKG/ LPKG, ICFST, NPCRD, NPERR, LECHO, IPCRD, LGEOM,
+     1               IX0, IY0, IWT, IDMAX, ISCN, ISCD, ICODE, IORD,
+     2               IFMAX
+      CHARACTER*18 PKNAME
+      CHARACTER*24 PKFILE
+      CHARACTER*80 CIMG(MXCRD)
+      COMMON /TZPKGC/ PKNAME, PKFILE, CIMG
+C     ---- LOCAL -------------------------------------------------------
+      INTEGER N, I, JX0, JY0, JX, JY
+      INTEGER CMRHD
+      EXTERNAL CMRHD
+C
+      N = 1
+      IF (IFMAX .GT. 0) N = (MAX(ABS(IDX), ABS(IDY)) + IFMAX - 1)
+     1                      / IFMAX
+      IF (N .LE. 1) THEN
+         CALL CMFADD(0, 0, IDX, IDY, 0, K, ICRD, ICOL)
+         RETURN
+      END IF
+      JX0 = 0
+      JY0 = 0
+      DO 10 I = 1, N
+         JX = CMRHD(I, ABS(IDX), N)
+         JY = CMRHD(I, ABS(IDY), N)
+         IF (IDX .LT. 0) JX = -JX
+         IF (IDY .LT. 0) JY = -JY
+         CALL CMFADD(0, 0, JX - JX0, JY - JY0, 0, K, ICRD, ICOL)
+         JX0 = JX
+         JY0 = JY
+   10 CONTINUE
+      RETURN
+C     END OF CMSPL1
+      END

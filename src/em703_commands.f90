@@ -1,0 +1,363 @@
+!> The subcommands of the em703 command, one function each, called by
+!> app/em703.f90 once it has parsed the arguments. Each reads its files,
+!> calls the library, writes its output and returns the exit status:
+!> 0 done, 1 the input had errors, 2 I/O trouble. Every message goes to
+!> standard error as one line naming the file and the row (or line).
+module em703_commands
+    use, intrinsic :: iso_fortran_env, only: int64, real64, error_unit
+    use em703_error, only: error_t, error_text, new_error
+    use em703_io, only: read_bytes, read_text, write_text, write_bytes, print_text
+    use em703_text, only: text_t, str, fixed, mm, ends_with
+    use em703_codec, only: tape_t, decode_tape, tape_text
+    use em703_sim, only: run_t, simulate, field_check, shift_run
+    use em703_jobsheet, only: job_t, read_job, NLAYERS
+    use em703_svg, only: svg_run, svg_job
+    use em703_gcode, only: gcode_program
+    use em703_gerber, only: gerber_image
+    use em703_punch, only: punch_text
+    use em703_view, only: view_tape, guess_code
+    implicit none
+    private
+    public :: run_list, run_sim, run_svg, run_gcode, run_gerber, run_punch, run_view, say
+
+    integer, parameter, public :: EXIT_OK = 0, EXIT_INPUT = 1, EXIT_USAGE = 2
+
+contains
+
+    !> One line on standard error.
+    subroutine say(line)
+        character(len=*), intent(in) :: line
+        integer :: ios
+        write(error_unit, '(a)', iostat=ios) line
+    end subroutine say
+
+    !> Read and decode a tape; status 0, 1 (bad tape) or 2 (cannot read).
+    subroutine load_tape(path, code, rows, tape, status)
+        character(len=*), intent(in) :: path, code
+        integer, allocatable, intent(out) :: rows(:)
+        type(tape_t), intent(out) :: tape
+        integer, intent(out) :: status
+        type(error_t), allocatable :: err
+        status = EXIT_OK
+        call read_bytes(path, rows, err)
+        if (allocated(err)) then
+            call say(error_text(err))
+            status = EXIT_USAGE
+            return
+        end if
+        call decode_tape(rows, code, tape, err)
+        if (allocated(err)) then
+            err%file = path
+            call say(error_text(err))
+            status = EXIT_INPUT
+        end if
+    end subroutine load_tape
+
+    !> Write text to a file, or to standard output when path is "" or "-".
+    integer function emit(path, text) result(status)
+        character(len=*), intent(in) :: path
+        type(text_t), intent(in) :: text
+        type(error_t), allocatable :: err
+        status = EXIT_OK
+        if (len(path) == 0 .or. path == '-') then
+            call print_text(text%value())
+            return
+        end if
+        call write_text(path, text%value(), err)
+        if (allocated(err)) then
+            call say(error_text(err))
+            status = EXIT_USAGE
+        end if
+    end function emit
+
+    ! ------------------------------------------------------------------
+    !> em703 list: the frames of a tape, its code variant, or its first error.
+    integer function run_list(path, code, utf8, bare) result(status)
+        character(len=*), intent(in) :: path, code
+        logical, intent(in) :: utf8, bare
+        integer, allocatable :: rows(:)
+        type(tape_t) :: tape
+        type(text_t) :: text
+        character(len=:), allocatable :: head
+        call load_tape(path, code, rows, tape, status)
+        if (status == EXIT_USAGE) return
+        if (.not. bare) then
+            head = '# code ' // tape%code
+            if (.not. tape%told) head = head // ' (no digit row tells 8 from K)'
+            head = head // ', ' // str(tape%nrows) // ' rows, ' // str(tape%nframes) // &
+                   trim(merge(' frame ', ' frames', tape%nframes == 1))
+            if (status /= EXIT_OK) head = head // ' before the error'
+            call text%add(head)
+        end if
+        if (tape%opened) then
+            call tape_text(tape%frames(1:tape%nframes), utf8, text)
+            if (status /= EXIT_OK) text%n = text%n - merge(5, 3, utf8)   ! no closing GM
+        end if
+        call print_text(text%value())
+    end function run_list
+
+    ! ------------------------------------------------------------------
+    !> em703 sim: run a tape on the simulated coordinatograph.
+    integer function run_sim(path, code, num, den, start_x, start_y, svg_path, tool) result(status)
+        character(len=*), intent(in) :: path, code, svg_path
+        integer, intent(in) :: num, den
+        integer(int64), intent(in) :: start_x, start_y, tool
+        integer, allocatable :: rows(:)
+        type(tape_t) :: tape
+        type(run_t) :: run
+        type(text_t) :: text, svg
+        type(error_t), allocatable :: err, field_err
+        call load_tape(path, code, rows, tape, status)
+        if (status /= EXIT_OK) return
+        call simulate(tape%frames(1:tape%nframes), run, err)
+        if (allocated(err)) then
+            err%file = path
+            call say(error_text(err))
+            status = EXIT_INPUT
+            return
+        end if
+        call field_check(run, tape%frames(1:tape%nframes), start_x, start_y, num, den, field_err)
+        call text%add('code = ' // tape%code)
+        call text%add('frames = ' // str(tape%nframes))
+        call text%add('executed = ' // str(run%executed))
+        call text%add('rows = ' // str(tape%nrows))
+        call text%add('tape_m = ' // fixed(tape%nrows * 2.54_real64 / 1000, 3))
+        call text%add('drawn_mm = ' // fixed(run%drawn_mm, 2))
+        call text%add('line_mm = ' // fixed(run%line_mm, 2))
+        call text%add('arc_mm = ' // fixed(run%arc_mm, 2))
+        call text%add('travel_mm = ' // fixed(run%travel_mm, 2))
+        call text%add('minutes = ' // fixed(run%minutes, 3))
+        call text%add('end_x_mm = ' // mm(run%end_x))
+        call text%add('end_y_mm = ' // mm(run%end_y))
+        call text%add('tool_at_end = ' // trim(merge('down', 'up  ', run%down)))
+        call text%add('xmin_mm = ' // fixed(run%xmin, 2))
+        call text%add('xmax_mm = ' // fixed(run%xmax, 2))
+        call text%add('ymin_mm = ' // fixed(run%ymin, 2))
+        call text%add('ymax_mm = ' // fixed(run%ymax, 2))
+        call text%add('scale = ' // str(num) // ':' // str(den))
+        call text%add('start_x_mm = ' // mm(start_x))
+        call text%add('start_y_mm = ' // mm(start_y))
+        call text%add('field = ' // trim(merge('left  ', 'inside', allocated(field_err))))
+        call print_text(text%value())
+        if (len(svg_path) > 0) then
+            call svg_run(run, tool, 'EM-703 tape ' // path // ', tool ' // mm(tool) // ' mm', svg)
+            status = emit(svg_path, svg)
+            if (status /= EXIT_OK) return
+        end if
+        if (allocated(field_err)) then
+            field_err%file = path
+            call say(error_text(field_err))
+            status = EXIT_INPUT
+        end if
+    end function run_sim
+
+    ! ------------------------------------------------------------------
+    !> The tapes of a job sheet, decoded in the job's code and run one after
+    !> another (each starts where the previous one ended). Status 0, 1 or 2;
+    !> complete: every tape was run (status 1 then means a tape that does not
+    !> end at its start point, a warning the output can live with).
+    subroutine load_job(path, job, runs, labels, tools, status, complete)
+        character(len=*), intent(in) :: path
+        type(job_t), intent(out) :: job
+        type(run_t), intent(out) :: runs(NLAYERS)
+        character(len=200), intent(out) :: labels(NLAYERS)
+        integer(int64), intent(out) :: tools(NLAYERS)
+        integer, intent(out) :: status
+        logical, intent(out) :: complete
+        type(error_t), allocatable :: err
+        integer, allocatable :: rows(:)
+        type(tape_t) :: tape
+        integer :: l
+        integer(int64) :: ox, oy
+        logical :: open_end
+        complete = .false.
+        open_end = .false.
+        call read_job(path, job, err)
+        if (allocated(err)) then
+            call say(error_text(err))
+            status = merge(EXIT_USAGE, EXIT_INPUT, err%at == 0 .and. &
+                           index(err%message, 'cannot ') == 1)
+            return
+        end if
+        ox = 0
+        oy = 0
+        do l = 1, NLAYERS
+            labels(l) = 'tape ' // job%layers(l)%key // ' ' // job%layers(l)%tape
+            tools(l) = job%layers(l)%tool
+            call load_tape(job%layers(l)%path, job%code, rows, tape, status)
+            if (status /= EXIT_OK) return
+            call simulate(tape%frames(1:tape%nframes), runs(l), err)
+            if (allocated(err)) then
+                err%file = job%layers(l)%path
+                call say(error_text(err))
+                status = EXIT_INPUT
+                return
+            end if
+            if (l < NLAYERS .and. (runs(l)%end_x /= 0 .or. runs(l)%end_y /= 0)) then
+                call say(job%layers(l)%path // ': the tape ends at (' // mm(runs(l)%end_x) // &
+                    ', ' // mm(runs(l)%end_y) // ') mm from its start point, not at it: ' // &
+                    'the next tape starts there')
+                open_end = .true.
+            end if
+            call shift_run(runs(l), ox, oy)
+            ox = runs(l)%end_x
+            oy = runs(l)%end_y
+        end do
+        complete = .true.
+        if (open_end) status = EXIT_INPUT
+    end subroutine load_job
+
+    !> em703 svg: all tapes of a job in one drawing.
+    integer function run_svg(path, out) result(status)
+        character(len=*), intent(in) :: path, out
+        type(job_t) :: job
+        type(run_t) :: runs(NLAYERS)
+        character(len=200) :: labels(NLAYERS)
+        integer(int64) :: tools(NLAYERS)
+        type(text_t) :: text
+        character(len=5) :: keys(NLAYERS)
+        integer :: l, s2
+        logical :: complete
+        call load_job(path, job, runs, labels, tools, status, complete)
+        if (.not. complete) return
+        do l = 1, NLAYERS
+            keys(l) = job%layers(l)%key
+        end do
+        call svg_job(runs, tools, keys, 'EM-703 job ' // job%name // ': small ' // mm(tools(1)) // &
+            ' mm (red), large ' // mm(tools(2)) // ' mm (blue), cond ' // mm(tools(3)) // &
+            ' mm (green)', text)
+        s2 = emit(out, text)
+        if (s2 /= EXIT_OK) status = s2
+    end function run_svg
+
+    !> em703 gcode: a tape or a job as an ISO 6983 program.
+    integer function run_gcode(path, chord_tol, use_z, out) result(status)
+        character(len=*), intent(in) :: path, out
+        real(real64), intent(in) :: chord_tol
+        logical, intent(in) :: use_z
+        type(job_t) :: job
+        type(run_t) :: runs(NLAYERS)
+        character(len=200) :: labels(NLAYERS)
+        integer(int64) :: tools(NLAYERS)
+        type(text_t) :: text
+        integer, allocatable :: rows(:)
+        type(tape_t) :: tape
+        type(error_t), allocatable :: err
+        integer :: s2
+        logical :: complete
+        if (ends_with(path, '.job')) then
+            call load_job(path, job, runs, labels, tools, status, complete)
+            if (.not. complete) return
+            call gcode_program(runs, labels, tools, 'EM-703 job ' // job%name // ', code ' // &
+                               job%code, chord_tol, use_z, text)
+        else
+            call load_tape(path, 'auto', rows, tape, status)
+            if (status /= EXIT_OK) return
+            call simulate(tape%frames(1:tape%nframes), runs(1), err)
+            if (allocated(err)) then
+                err%file = path
+                call say(error_text(err))
+                status = EXIT_INPUT
+                return
+            end if
+            labels(1) = 'tape ' // path
+            tools(1) = 0
+            call gcode_program(runs(1:1), labels(1:1), tools(1:1), 'EM-703 tape, code ' // &
+                               tape%code // ', ' // str(tape%nframes) // ' frames', &
+                               chord_tol, use_z, text)
+        end if
+        s2 = emit(out, text)
+        if (s2 /= EXIT_OK) status = s2
+    end function run_gcode
+
+    !> em703 gerber: the tapes of a job as one RS-274X image.
+    integer function run_gerber(path, out) result(status)
+        character(len=*), intent(in) :: path, out
+        type(job_t) :: job
+        type(run_t) :: runs(NLAYERS)
+        character(len=200) :: labels(NLAYERS)
+        integer(int64) :: tools(NLAYERS)
+        type(text_t) :: text
+        integer :: l, s2
+        logical :: complete
+        call load_job(path, job, runs, labels, tools, status, complete)
+        if (.not. complete) return
+        do l = 1, NLAYERS
+            if (max(abs(runs(l)%xmin), abs(runs(l)%xmax), abs(runs(l)%ymin), &
+                    abs(runs(l)%ymax)) >= 999999.0_real64) then
+                call say(job%layers(l)%path // ': the drawing reaches beyond 999999 mm, ' // &
+                         'more than the Gerber 6.6 format holds')
+                status = EXIT_INPUT
+                return
+            end if
+        end do
+        call gerber_image(runs, labels, tools, 'EM-703 job ' // job%name // ', code ' // &
+                          job%code, text)
+        s2 = emit(out, text)
+        if (s2 /= EXIT_OK) status = s2
+    end function run_gerber
+
+    ! ------------------------------------------------------------------
+    !> em703 punch: text onto an ISO 7-bit or EIA RS-244 tape image.
+    integer function run_punch(code, path, out) result(status)
+        character(len=*), intent(in) :: code, path, out
+        character(len=:), allocatable :: text, target
+        integer, allocatable :: rows(:)
+        type(error_t), allocatable :: err
+        integer :: k
+        status = EXIT_OK
+        call read_text(path, text, err)
+        if (allocated(err)) then
+            call say(error_text(err))
+            status = EXIT_USAGE
+            return
+        end if
+        call punch_text(text, code, rows, err)
+        if (allocated(err)) then
+            err%file = path
+            call say(error_text(err))
+            status = EXIT_INPUT
+            return
+        end if
+        target = out
+        if (len(target) == 0) then
+            k = index(path, '.', back=.true.)
+            if (k <= index(path, '/', back=.true.) + 1) k = len(path) + 1
+            target = path(1:k - 1) // '.' // code // '.ptp'
+        end if
+        call write_bytes(target, rows, err)
+        if (allocated(err)) then
+            call say(error_text(err))
+            status = EXIT_USAGE
+        end if
+    end function run_punch
+
+    !> em703 view: a picture of any tape image; code "auto", "em703", "iso", "eia".
+    integer function run_view(path, code, first, last) result(status)
+        character(len=*), intent(in) :: path, code
+        integer, intent(in) :: first, last
+        integer, allocatable :: rows(:)
+        type(error_t), allocatable :: err
+        type(text_t) :: text
+        character(len=:), allocatable :: c
+        status = EXIT_OK
+        call read_bytes(path, rows, err)
+        if (allocated(err)) then
+            call say(error_text(err))
+            status = EXIT_USAGE
+            return
+        end if
+        c = code
+        if (c == 'auto') c = guess_code(rows)
+        if (c == 'em703' .and. any(rows > 31)) then
+            call new_error(err, 'a row has holes beyond track 5: not an EM-703 tape')
+            err%file = path
+            call say(error_text(err))
+            status = EXIT_INPUT
+            return
+        end if
+        call view_tape(rows, c, first, last, text)
+        call print_text(text%value())
+    end function run_view
+
+end module em703_commands

@@ -1,0 +1,214 @@
+!> Simulated runs as an ISO 6983 (RS-274) program for a modern machine.
+!>
+!> `%`, then blocks numbered N1, N2, ... (after N99999 the numbers start
+!> again at N1), millimetres (G21), absolute coordinates (G90) with the
+!> start point as the origin, the XY plane (G17), feed per minute (G94).
+!> Travel with the tool raised is G00; a drawn line G01 at the machine's line
+!> speed (F5500); an arc or circle G02 (K13, clockwise) or G03 (K11,
+!> counter-clockwise) with the centre as I, J relative to the arc's start, at
+!> the arc speed (F1500). The tool goes down and up as M03 / M05 or, with
+!> use_z, as Z moves (down G01 Z0.000, up G00 Z1.000). A dot is the tool
+!> lowered and raised where it stands. M02 ends the program, then `%`.
+!>
+!> Line-only machines: chord_tol > 0 replaces every arc by equal chords with
+!> the step angle of seed 002, 2*arccos(1 - tol/R), so that no point of a chord
+!> is farther than tol (mm) from the arc; the bound keeps a margin for the
+!> rounding of the chord ends to 0.001 mm. An arc's end may lie up to one unit
+!> off the circle through its start (SPEC section 3); the chords then follow
+!> the arc whose radius changes evenly from the start's to the end's, so that
+!> the last chord ends exactly at the tape's end point.
+module em703_gcode
+    use, intrinsic :: iso_fortran_env, only: int64, real64
+    use em703_sim, only: run_t, seg_t, SEG_LINE, SEG_TRAVEL, SEG_ARC, SEG_DOT, SEG_RAISE, &
+                         TWO_PI, LINE_SPEED, ARC_SPEED
+    use em703_text, only: text_t, str, fixed, mm
+    implicit none
+    private
+    public :: gcode_program, chord_count
+
+    !> Chord ends are written to 0.001 mm: each is within 0.00071 mm of the
+    !> arc, so the chords are planned for tol - ROUNDING.
+    real(real64), parameter, public :: ROUNDING = 0.0008_real64
+    !> Height of the raised tool for use_z, mm.
+    character(len=*), parameter :: Z_UP = '1.000', Z_DOWN = '0.000'
+
+    type :: state_t
+        integer :: n = 0                 !< last block number
+        logical :: down = .false.
+        integer :: feed = 0              !< current F (0 = none yet)
+        logical :: use_z = .false.
+    end type state_t
+
+contains
+
+    !> Number of equal chords for an arc of radius r and sweep |sweep| (radians)
+    !> so that each chord deviates at most tol - ROUNDING from the arc (all mm).
+    integer function chord_count(r, sweep, tol) result(n)
+        real(real64), intent(in) :: r, sweep, tol
+        real(real64) :: t, step
+        t = max(tol - ROUNDING, 1.0e-6_real64)
+        step = 2 * acos(max(-1.0_real64, 1 - t / max(r, 1.0e-9_real64)))
+        n = max(1, ceiling(abs(sweep) / step - 1.0e-9_real64))
+    end function chord_count
+
+    !> The program for one or more runs (tapes run one after another; for more
+    !> than one, each starts with a tool change T<l> M06). labels: a comment for
+    !> each tape; tools: tool widths in units (0 = unknown).
+    subroutine gcode_program(runs, labels, tools, title, chord_tol, use_z, text)
+        type(run_t), intent(in) :: runs(:)
+        character(len=*), intent(in) :: labels(:)
+        integer(int64), intent(in) :: tools(:)
+        character(len=*), intent(in) :: title
+        real(real64), intent(in) :: chord_tol      !< mm; 0 = keep the arcs
+        logical, intent(in) :: use_z
+        type(text_t), intent(inout) :: text
+        type(state_t) :: st
+        integer :: l, i
+        st%use_z = use_z
+        call text%add('%')
+        call text%add('(' // clean(title) // ')')
+        call text%add('(units mm, absolute, origin at the start point, lines F' // &
+            str(nint(LINE_SPEED)) // ', arcs F' // str(nint(ARC_SPEED)) // ' mm/min)')
+        if (chord_tol > 0) call text%add('(arcs as chords within ' // fixed(chord_tol, 4) // ' mm)')
+        call block(st, text, 'G21 G90 G17 G94')
+        if (use_z) then
+            call block(st, text, 'G00 Z' // Z_UP)
+        else
+            call block(st, text, 'M05')
+        end if
+        do l = 1, size(runs)
+            if (tools(l) > 0) then
+                call text%add('(' // clean(trim(labels(l))) // ', tool ' // mm(tools(l)) // ' mm)')
+            else
+                call text%add('(' // clean(trim(labels(l))) // ')')
+            end if
+            if (size(runs) > 1) then
+                call up(st, text)
+                call block(st, text, 'T' // str(l) // ' M06')
+            end if
+            do i = 1, runs(l)%nseg
+                call move(st, text, runs(l)%segs(i), chord_tol)
+            end do
+        end do
+        call up(st, text)
+        call block(st, text, 'M02')
+        call text%add('%')
+    end subroutine gcode_program
+
+    subroutine move(st, text, s, chord_tol)
+        type(state_t), intent(inout) :: st
+        type(text_t), intent(inout) :: text
+        type(seg_t), intent(in) :: s
+        real(real64), intent(in) :: chord_tol
+        integer :: n, j
+        real(real64) :: a, cx, cy, r, r0, r1
+        character(len=:), allocatable :: f
+        select case (s%kind)
+        case (SEG_TRAVEL)
+            call up(st, text)
+            call block(st, text, 'G00 X' // c3(s%x1) // ' Y' // c3(s%y1))
+        case (SEG_RAISE)
+            call up(st, text)
+        case (SEG_DOT)
+            call down(st, text)
+        case (SEG_LINE)
+            call down(st, text)
+            f = feed(st, nint(LINE_SPEED))
+            call block(st, text, 'G01 X' // c3(s%x1) // ' Y' // c3(s%y1) // f)
+        case (SEG_ARC)
+            call down(st, text)
+            if (chord_tol <= 0) then
+                f = feed(st, nint(ARC_SPEED))
+                call block(st, text, merge('G02', 'G03', s%sweep < 0) // ' X' // c3(s%x1) // &
+                    ' Y' // c3(s%y1) // ' I' // c3(s%cx - s%x0) // ' J' // c3(s%cy - s%y0) // f)
+            else
+                ! The radius goes from the start's to the end's (they may differ
+                ! by one unit): the chords end exactly at the tape's end point.
+                r0 = s%r / 100
+                r1 = hypot(real(s%x1 - s%cx, real64), real(s%y1 - s%cy, real64)) / 100
+                cx = real(s%cx, real64) / 100
+                cy = real(s%cy, real64) / 100
+                n = chord_count(max(r0, r1), s%sweep, chord_tol)
+                do j = 1, n - 1
+                    a = s%a0 + s%sweep * j / n
+                    r = r0 + (r1 - r0) * j / n
+                    f = feed(st, nint(ARC_SPEED))
+                    call block(st, text, 'G01 X' // fixed(cx + r * cos(a), 3) // ' Y' // &
+                        fixed(cy + r * sin(a), 3) // f)
+                end do
+                f = feed(st, nint(ARC_SPEED))
+                call block(st, text, 'G01 X' // c3(s%x1) // ' Y' // c3(s%y1) // f)
+            end if
+        end select
+    end subroutine move
+
+    !> " F<f>" when the feed changes, else "".
+    function feed(st, f) result(s)
+        type(state_t), intent(inout) :: st
+        integer, intent(in) :: f
+        character(len=:), allocatable :: s
+        s = ''
+        if (st%feed /= f) s = ' F' // str(f)
+        st%feed = f
+    end function feed
+
+    subroutine down(st, text)
+        type(state_t), intent(inout) :: st
+        type(text_t), intent(inout) :: text
+        character(len=:), allocatable :: f
+        if (st%down) return
+        if (st%use_z) then
+            f = feed(st, nint(LINE_SPEED))
+            call block(st, text, 'G01 Z' // Z_DOWN // f)
+        else
+            call block(st, text, 'M03')
+        end if
+        st%down = .true.
+    end subroutine down
+
+    subroutine up(st, text)
+        type(state_t), intent(inout) :: st
+        type(text_t), intent(inout) :: text
+        if (.not. st%down) return
+        if (st%use_z) then
+            call block(st, text, 'G00 Z' // Z_UP)
+        else
+            call block(st, text, 'M05')
+        end if
+        st%down = .false.
+    end subroutine up
+
+    subroutine block(st, text, words)
+        type(state_t), intent(inout) :: st
+        type(text_t), intent(inout) :: text
+        character(len=*), intent(in) :: words
+        st%n = st%n + 1
+        if (st%n > 99999) st%n = 1
+        call text%add('N' // str(st%n) // ' ' // words)
+    end subroutine block
+
+    !> Units (0.01 mm) as millimetres with three decimals.
+    function c3(units) result(s)
+        integer(int64), intent(in) :: units
+        character(len=:), allocatable :: s
+        s = mm(units) // '0'
+    end function c3
+
+    !> A comment's text in characters that both ISO and EIA tape have (letters,
+    !> digits, space and . , - + /), so that `em703 punch` takes the program in
+    !> either code; any other character becomes "-".
+    function clean(s) result(t)
+        character(len=*), intent(in) :: s
+        character(len=len(s)) :: t
+        integer :: i
+        t = s
+        do i = 1, len(t)
+            select case (t(i:i))
+            case ('a':'z', 'A':'Z', '0':'9', ' ', '.', ',', '-', '+', '/')
+            case default
+                t(i:i) = '-'
+            end select
+        end do
+    end function clean
+
+end module em703_gcode

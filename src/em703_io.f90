@@ -1,0 +1,153 @@
+!> File input and output of the em703 tools: a whole file as bytes or as text,
+!> a file written under a temporary name and renamed when complete (so a
+!> failed run never leaves half a file), text to standard output. Every
+!> statement that can fail has iostat and iomsg; failures come back as an
+!> error_t naming the file.
+module em703_io
+    use, intrinsic :: iso_fortran_env, only: output_unit
+    use em703_error, only: error_t, new_error
+    use em703_os, only: rename_file, remove_file
+    implicit none
+    private
+    public :: read_bytes, read_text, write_bytes, write_text, print_text, dir_of
+
+contains
+
+    !> The whole file as one string (bytes as characters).
+    subroutine read_text(path, text, err)
+        character(len=*), intent(in) :: path
+        character(len=:), allocatable, intent(out) :: text
+        type(error_t), allocatable, intent(out) :: err
+        integer :: u, ios, size_
+        character(len=256) :: msg
+        logical :: exists
+        text = ''
+        inquire(file=path, exist=exists)
+        if (.not. exists) then
+            call new_error(err, 'cannot open: no such file')
+            err%file = path
+            return
+        end if
+        open(newunit=u, file=path, access='stream', form='unformatted', status='old', &
+             action='read', iostat=ios, iomsg=msg)
+        if (ios /= 0) then
+            call new_error(err, 'cannot open: ' // trim(msg))
+            err%file = path
+            return
+        end if
+        inquire(unit=u, size=size_)
+        if (size_ < 0) then
+            close(u, iostat=ios)
+            call new_error(err, 'cannot read: not a regular file')
+            err%file = path
+            return
+        end if
+        deallocate(text)
+        allocate(character(len=size_) :: text)
+        if (size_ > 0) then
+            read(u, iostat=ios, iomsg=msg) text
+            if (ios /= 0) then
+                close(u, iostat=ios)
+                call new_error(err, 'cannot read: ' // trim(msg))
+                err%file = path
+                return
+            end if
+        end if
+        close(u, iostat=ios)
+    end subroutine read_text
+
+    !> The whole file as byte values 0..255, one per row of a tape image.
+    subroutine read_bytes(path, rows, err)
+        character(len=*), intent(in) :: path
+        integer, allocatable, intent(out) :: rows(:)
+        type(error_t), allocatable, intent(out) :: err
+        character(len=:), allocatable :: text
+        integer :: i
+        call read_text(path, text, err)
+        allocate(rows(len(text)))
+        if (allocated(err)) return
+        do i = 1, len(text)
+            rows(i) = iachar(text(i:i))
+        end do
+    end subroutine read_bytes
+
+    !> Write bytes (values 0..255) as a file.
+    subroutine write_bytes(path, rows, err)
+        character(len=*), intent(in) :: path
+        integer, intent(in) :: rows(:)
+        type(error_t), allocatable, intent(out) :: err
+        character(len=:), allocatable :: text
+        integer :: i
+        allocate(character(len=size(rows)) :: text)
+        do i = 1, size(rows)
+            text(i:i) = achar(iand(rows(i), 255))
+        end do
+        call write_text(path, text, err)
+    end subroutine write_bytes
+
+    !> Write a string as the whole file: to PATH.tmp first, then renamed.
+    subroutine write_text(path, text, err)
+        character(len=*), intent(in) :: path
+        character(len=*), intent(in) :: text
+        type(error_t), allocatable, intent(out) :: err
+        character(len=:), allocatable :: tmp
+        character(len=256) :: msg
+        integer :: u, ios
+        logical :: ok
+        tmp = path // '.tmp'
+        open(newunit=u, file=tmp, access='stream', form='unformatted', status='replace', &
+             action='write', iostat=ios, iomsg=msg)
+        if (ios /= 0) then
+            call new_error(err, 'cannot write: ' // trim(msg))
+            err%file = path
+            return
+        end if
+        if (len(text) > 0) write(u, iostat=ios, iomsg=msg) text
+        if (ios /= 0) then
+            close(u, status='delete', iostat=ios)
+            call new_error(err, 'cannot write: ' // trim(msg))
+            err%file = path
+            return
+        end if
+        close(u, iostat=ios, iomsg=msg)
+        if (ios /= 0) then
+            call remove_file(tmp)
+            call new_error(err, 'cannot write: ' // trim(msg))
+            err%file = path
+            return
+        end if
+        call rename_file(tmp, path, ok)
+        if (.not. ok) then
+            call remove_file(tmp)
+            call new_error(err, 'cannot write: rename from ' // tmp // ' failed')
+            err%file = path
+        end if
+    end subroutine write_text
+
+    !> Text (lines ending in newlines) on standard output, line by line.
+    subroutine print_text(text)
+        character(len=*), intent(in) :: text
+        integer :: i, j, ios
+        i = 1
+        do while (i <= len(text))
+            j = index(text(i:), achar(10))
+            if (j == 0) then
+                write(output_unit, '(a)', iostat=ios) text(i:)
+                exit
+            end if
+            write(output_unit, '(a)', iostat=ios) text(i:i + j - 2)
+            i = i + j
+        end do
+        flush(output_unit)
+    end subroutine print_text
+
+    !> The directory part of a path with its slash ("" for a bare name).
+    function dir_of(path) result(dir)
+        character(len=*), intent(in) :: path
+        character(len=:), allocatable :: dir
+        integer :: k
+        k = index(path, '/', back=.true.)
+        dir = path(1:k)
+    end function dir_of
+
+end module em703_io

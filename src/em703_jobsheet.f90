@@ -1,0 +1,192 @@
+!> The job sheet TENZOR writes beside the tapes of a package (SPEC section 4):
+!> `key = value` lines, `#` comment lines. The em703 tools read the name, the
+!> code, the scale, the start point and, for each tape T in small, large,
+!> cond, its file `T.tape` (relative to the job sheet's directory) and its
+!> tool `T.tool_mm`. Other keys are ignored.
+module em703_jobsheet
+    use, intrinsic :: iso_fortran_env, only: int64
+    use em703_error, only: error_t, new_error, AT_LINE
+    use em703_io, only: read_text, dir_of
+    use em703_text, only: parse_int, parse_mm
+    implicit none
+    private
+    public :: job_t, layer_t, read_job, parse_scale, machine_scale, LAYER_KEYS, NLAYERS
+
+    integer, parameter :: NLAYERS = 3
+    character(len=5), parameter :: LAYER_KEYS(NLAYERS) = ['small', 'large', 'cond ']
+
+    !> One tape of a job: its key, the file as named and as a path, its tool.
+    type :: layer_t
+        character(len=:), allocatable :: key
+        character(len=:), allocatable :: tape     !< as on the job sheet
+        character(len=:), allocatable :: path     !< relative to the working directory
+        integer(int64) :: tool = 0                !< tool diameter, 0.01 mm
+    end type layer_t
+
+    type :: job_t
+        character(len=:), allocatable :: path
+        character(len=:), allocatable :: name
+        character(len=:), allocatable :: code     !< "8", "K" or "auto" (no code line)
+        integer :: num = 1, den = 1               !< scale num:den
+        integer(int64) :: start_x = 0, start_y = 0  !< start point on the field, 0.01 mm
+        type(layer_t) :: layers(NLAYERS)
+    end type job_t
+
+contains
+
+    !> Read and check a job sheet. Errors name the line (or the missing key).
+    subroutine read_job(path, job, err)
+        character(len=*), intent(in) :: path
+        type(job_t), intent(out) :: job
+        type(error_t), allocatable, intent(out) :: err
+        character(len=:), allocatable :: text, line, key, value
+        integer :: i, j, lineno, p, l
+        logical :: seen_tape(NLAYERS), seen_tool(NLAYERS), ok
+        integer(int64) :: v
+
+        job%path = path
+        job%name = ''
+        job%code = 'auto'
+        do l = 1, NLAYERS
+            job%layers(l)%key = trim(LAYER_KEYS(l))
+            job%layers(l)%tape = ''
+            job%layers(l)%path = ''
+        end do
+        seen_tape = .false.
+        seen_tool = .false.
+        call read_text(path, text, err)
+        if (allocated(err)) return
+
+        i = 1
+        lineno = 0
+        do while (i <= len(text))
+            j = index(text(i:), achar(10))
+            if (j == 0) then
+                line = text(i:)
+                i = len(text) + 1
+            else
+                line = text(i:i + j - 2)
+                i = i + j
+            end if
+            lineno = lineno + 1
+            if (len(line) > 0) then
+                if (line(len(line):) == achar(13)) line = line(1:len(line) - 1)
+            end if
+            if (len_trim(line) == 0) cycle
+            if (line(1:1) == '#') cycle
+            p = index(line, ' = ')
+            if (p == 0) then
+                call fail('not a "key = value" line: "' // line // '"')
+                return
+            end if
+            key = trim(adjustl(line(1:p - 1)))
+            value = trim(adjustl(line(p + 3:)))
+            select case (key)
+            case ('name')
+                job%name = value
+            case ('code')
+                if (value /= '8' .and. value /= 'K') then
+                    call fail('code must be 8 or K, not "' // value // '"')
+                    return
+                end if
+                job%code = value
+            case ('scale')
+                call parse_scale(value, job%num, job%den, ok)
+                if (.not. ok) then
+                    call fail('scale must be N:D with N, D from 1 to 100, not "' // value // '"')
+                    return
+                end if
+            case ('start_x_mm', 'start_y_mm')
+                call parse_mm(value, v, ok)
+                if (.not. ok) then
+                    call fail(key // ' must be millimetres with at most two decimals, not "' // &
+                              value // '"')
+                    return
+                end if
+                if (key == 'start_x_mm') then
+                    job%start_x = v
+                else
+                    job%start_y = v
+                end if
+            case default
+                do l = 1, NLAYERS
+                    if (key == trim(LAYER_KEYS(l)) // '.tape') then
+                        if (len(value) == 0 .or. index(value, '/') > 0) then
+                            call fail(key // ' must name a file beside the job sheet, not "' // &
+                                      value // '"')
+                            return
+                        end if
+                        job%layers(l)%tape = value
+                        job%layers(l)%path = dir_of(path) // value
+                        seen_tape(l) = .true.
+                    else if (key == trim(LAYER_KEYS(l)) // '.tool_mm') then
+                        call parse_mm(value, v, ok)
+                        if (.not. ok .or. v <= 0) then
+                            call fail(key // ' must be a tool width in mm (> 0, two decimals), ' // &
+                                      'not "' // value // '"')
+                            return
+                        end if
+                        job%layers(l)%tool = v
+                        seen_tool(l) = .true.
+                    end if
+                end do
+            end select
+        end do
+        if (len(job%name) == 0) then
+            call new_error(err, 'the job sheet has no "name = ..." line')
+            err%file = path
+            return
+        end if
+        do l = 1, NLAYERS
+            if (.not. seen_tape(l)) then
+                call new_error(err, 'the job sheet has no "' // trim(LAYER_KEYS(l)) // &
+                               '.tape = ..." line')
+            else if (.not. seen_tool(l)) then
+                call new_error(err, 'the job sheet has no "' // trim(LAYER_KEYS(l)) // &
+                               '.tool_mm = ..." line')
+            end if
+            if (allocated(err)) then
+                err%file = path
+                return
+            end if
+        end do
+    contains
+        subroutine fail(message)
+            character(len=*), intent(in) :: message
+            call new_error(err, message, AT_LINE, lineno)
+            err%file = path
+        end subroutine fail
+    end subroutine read_job
+
+    !> "N:D" with 1 <= N, D <= 100.
+    subroutine parse_scale(s, num, den, ok)
+        character(len=*), intent(in) :: s
+        integer, intent(out) :: num, den
+        logical, intent(out) :: ok
+        integer :: p
+        integer(int64) :: a, b
+        num = 1
+        den = 1
+        ok = .false.
+        p = index(s, ':')
+        if (p == 0) return
+        call parse_int(s(1:p - 1), a, ok)
+        if (.not. ok) return
+        call parse_int(s(p + 1:), b, ok)
+        if (.not. ok) return
+        ok = a >= 1 .and. a <= 100 .and. b >= 1 .and. b <= 100
+        if (ok) then
+            num = int(a)
+            den = int(b)
+        end if
+    end subroutine parse_scale
+
+    !> True for the scales the machine has (SPEC section 1): 1:100, 1:10, 1:5,
+    !> 1:2, 1:1, 2:1, 5:1, 50:1, 100:1 (10:1 is not in the report's list).
+    logical function machine_scale(num, den)
+        integer, intent(in) :: num, den
+        machine_scale = (num == 1 .and. any(den == [1, 2, 5, 10, 100])) .or. &
+                        (den == 1 .and. any(num == [2, 5, 50, 100]))
+    end function machine_scale
+
+end module em703_jobsheet
