@@ -244,10 +244,9 @@ def st_stress_deck(draw: st.DrawFn) -> bytes:
                                      draw(st_length()), draw(st_length(1))))
         elif kind == "A":
             r = draw(st.sampled_from([1_000_000, 999_999, 600_000, 1]))
-            # an end at the centre itself is the known fault of
-            # test_arc_ending_at_its_centre, left out here until it is fixed
-            end = draw(st.sampled_from([(0, r), (0, -r), (-r, 0), (r, -r), (-r, -r), (r, r)]))
-            body.append(cards.a_card(draw(st.sampled_from("+-")), 0, 0, r, 0, *end))
+            body.append(cards.a_card(draw(st.sampled_from("+-")), 0, 0, r, 0,
+                                     draw(st.sampled_from([0, -r, r])),
+                                     draw(st.sampled_from([r, -r, 0]))))
         else:
             body.append(cards.m_card(draw(st.sampled_from("SBL")), draw(st_length()),
                                      draw(st_length()), draw(st_length()), draw(st_length()),
@@ -487,13 +486,11 @@ def test_fixed_hostile_deck(tenzor_exe, roomy_tmp, deck, status, fragment):
 
 
 # ---------------------------------------------------------------------------
-# Faults found by fuzzing and left to the owner of legacy/ (docs/ROBUSTNESS.md).
+# Faults found by fuzzing (docs/ROBUSTNESS.md), kept as their smallest decks.
 # ---------------------------------------------------------------------------
-@pytest.mark.xfail(strict=True, reason="legacy/: an A card whose end is its centre (on the "
-                   "circle of radius 0.01 mm within the 0.01 mm tolerance) is accepted and "
-                   "drawn from that end: the tape gets DX1 K11 KK, an arc without X or Y, "
-                   "which no reader accepts; exit status 0")
 def test_arc_ending_at_its_centre(tenzor_exe, tmp_path):
+    """Finding 6: this card was accepted and drawn from its end, punching
+    DX1 K11 KK (an arc without X or Y) with exit status 0."""
     deck = (b"ARC\nP             100.00    100.00\n"
             b"A+              0.00      0.00      0.01      0.00      0.00      0.00\nE\n")
     o = run_checked(tenzor_exe, tmp_path, deck)
