@@ -3,6 +3,13 @@ from __future__ import annotations
 
 from pathlib import Path
 
+#: What a program of the project must never print, whatever its input: the
+#: Fortran run-time library's error reports and the signals of a crash
+#: (the fuzz suites check both streams for these).
+FORBIDDEN = ("Fortran runtime", "Backtrace", "Error termination", "Program received signal",
+             "SIGSEGV", "SIGFPE", "SIGABRT", "SIGBUS", "Segmentation fault", "core dumped",
+             "Aborted")
+
 
 def read_job(path: Path) -> dict[str, str]:
     """A job sheet as a dict of its `key = value` lines (comments skipped)."""

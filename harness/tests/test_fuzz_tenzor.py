@@ -34,6 +34,7 @@ from hypothesis import HealthCheck, example, given, settings
 from hypothesis import strategies as st
 
 from harness import cards, tape
+from harness.tests.conftest_helpers import FORBIDDEN
 
 #: Examples per property test: the CI profile, or the long run.
 LONG = os.environ.get("HYPOTHESIS_PROFILE") == "long"
@@ -42,10 +43,6 @@ FUZZ = settings(max_examples=N, deadline=None,
                 suppress_health_check=[HealthCheck.function_scoped_fixture,
                                        HealthCheck.too_slow, HealthCheck.data_too_large])
 
-#: What must never appear on either stream.
-FORBIDDEN = ("Fortran runtime", "Backtrace", "Error termination", "Program received signal",
-             "SIGSEGV", "SIGFPE", "SIGABRT", "SIGBUS", "Segmentation fault", "core dumped",
-             "Aborted")
 TAPE_SUFFIXES = ("-small.ptp", "-large.ptp", "-cond.ptp", "-small.txt", "-large.txt",
                  "-cond.txt", ".job")
 
