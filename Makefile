@@ -4,8 +4,8 @@
 #   make bench  the benchmarks of docs/PERFORMANCE.md (about 10 minutes; BENCH_ARGS=--quick
 #               for the 100- and 1 000-pad boards): a table, and out/bench/bench.csv, .svg
 # and, for CI (.ci/run):
-#   make test-checks   the Fortran tests and every harness test that runs tenzor,
-#                      again, on a build with gfortran's run-time checks
+#   make test-checks   the Fortran tests and every harness test that runs tenzor
+#                      or em703, again, on a build with gfortran's run-time checks
 SHELL := /bin/bash
 export PATH := $(CURDIR)/.venv/bin:$(PATH)
 DECK ?= examples/demo.crd
@@ -37,7 +37,8 @@ test: build
 test-checks: setup
 	fpm test --profile debug --flag "$(CHECKS)"
 	TENZOR_EXE="$$(fpm run --profile debug --flag "$(CHECKS)" --runner echo tenzor 2>/dev/null | tail -n 1)" \
-		python -m pytest harness -m tenzor
+	EM703_EXE="$$(fpm run --profile debug --flag "$(CHECKS)" --runner echo em703 2>/dev/null | tail -n 1)" \
+		python -m pytest harness -m "tenzor or em703"
 
 # harness.bench builds the release profile of TENZOR itself (fpm build --profile release).
 bench: setup

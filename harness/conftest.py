@@ -55,15 +55,20 @@ def tenzor_exe() -> Path:
 
 
 def pytest_collection_modifyitems(config, items) -> None:
-    """Mark every test that runs TENZOR with ``tenzor`` (``pytest -m tenzor``
-    selects them: CI's pass against the build with run-time checks)."""
+    """Mark every test that runs TENZOR with ``tenzor``, every test that runs
+    em703 with ``em703`` (``pytest -m "tenzor or em703"`` selects them: CI's
+    pass against the build with run-time checks)."""
     for item in items:
-        if "tenzor_exe" in getattr(item, "fixturenames", ()):
+        names = getattr(item, "fixturenames", ())
+        if "tenzor_exe" in names:
             item.add_marker(pytest.mark.tenzor)
+        if "em703_exe" in names:
+            item.add_marker(pytest.mark.em703)
 
 
 def pytest_configure(config) -> None:
     config.addinivalue_line("markers", "tenzor: the test runs the tenzor executable")
+    config.addinivalue_line("markers", "em703: the test runs the em703 executable")
 
 
 @pytest.fixture
