@@ -39,6 +39,8 @@ PITCHES: tuple[float, ...] = (2.0, 3.0, 4.0)
 MAX_PIXELS = 50_000_000
 #: Tile edge in pixels for :func:`compare`.
 TILE = 256
+#: Most tile centres tested against one shape at a time.
+_TILE_CHUNK = 1 << 18
 Box = tuple[float, float, float, float]
 
 
@@ -205,12 +207,16 @@ def _tiles(grid: Grid, shapes: Sequence[AnyShape], pad: float,
         tj1 = min(math.ceil(grid.ny / TILE) - 1, math.floor((b[3] + pad - grid.y0) / span))
         if ti0 > ti1 or tj0 > tj1:
             continue
-        ti, tj = np.meshgrid(np.arange(ti0, ti1 + 1), np.arange(tj0, tj1 + 1))
-        cx = grid.x0 + (ti + 0.5) * span
-        cy = grid.y0 + (tj + 0.5) * span
-        near = s.sdf(cx, cy) <= half + pad
-        for a, c in zip(tj[near].tolist(), ti[near].tolist()):
-            tiles.setdefault((a, c), []).append(n + offset)
+        # a few tile rows at a time, so that a huge shape (a 10 m circle
+        # has some 15 million tiles in its box) needs little memory
+        rows = max(1, _TILE_CHUNK // (ti1 - ti0 + 1))
+        for r0 in range(tj0, tj1 + 1, rows):
+            ti, tj = np.meshgrid(np.arange(ti0, ti1 + 1), np.arange(r0, min(tj1, r0 + rows - 1) + 1))
+            cx = grid.x0 + (ti + 0.5) * span
+            cy = grid.y0 + (tj + 0.5) * span
+            near = s.sdf(cx, cy) <= half + pad
+            for a, c in zip(tj[near].tolist(), ti[near].tolist()):
+                tiles.setdefault((a, c), []).append(n + offset)
 
 
 def _top(values: np.ndarray, k: int) -> np.ndarray:
