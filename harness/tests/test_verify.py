@@ -4,6 +4,7 @@ purpose by editing their frames with harness.tape."""
 from __future__ import annotations
 
 import math
+import os
 import shutil
 import subprocess
 import sys
@@ -12,10 +13,13 @@ from dataclasses import replace
 from pathlib import Path
 
 import pytest
+from hypothesis import HealthCheck, example, given, settings
+from hypothesis import strategies as st
 
 from harness import cards, tape, verify
 from harness.__main__ import main
 from harness.tape import Frame
+from harness.tests.em703_helpers import frame_lists
 
 ROOT = Path(__file__).resolve().parents[2]
 EXAMPLES = sorted((ROOT / "examples").glob("**/*.crd"))
@@ -426,6 +430,32 @@ def test_readme_example_is_true(tenzor_exe, tmp_path) -> None:
     path.write_bytes(bytes(data))
     proc = subprocess.run([sys.executable, "-m", "harness", "verify", "examples/demo.crd", "out"],
                           cwd=tmp_path, capture_output=True, text=True, timeout=300,
-                          env={**__import__("os").environ, "PYTHONPATH": str(ROOT)})
+                          env={**os.environ, "PYTHONPATH": str(ROOT)})
     assert proc.returncode == 1, proc.stderr
     assert proc.stdout == shown
+
+
+# ---------------------------------------------------------------------------
+# verify itself takes any tape: a verdict, never an exception.
+# ---------------------------------------------------------------------------
+SMALL = cards.deck([cards.CardPackage("S", [
+    cards.p_card(5000, 5000, 40), cards.d_card(500, 500, 160),
+    cards.l_card(0, 1000), cards.plus_card(1000, 1000)])], envelope=False)
+
+
+@settings(max_examples=300 if os.environ.get("HYPOTHESIS_PROFILE") == "long" else 12,
+          deadline=None,
+          suppress_health_check=[HealthCheck.function_scoped_fixture, HealthCheck.too_slow])
+@given(small=st.one_of(st.binary(max_size=300), frame_lists(max_items=2).map(tape.encode)),
+       cond=st.one_of(st.binary(max_size=300), frame_lists(max_items=2).map(tape.encode)))
+@example(small=tape.encode([Frame(x=1_000_000, k=13)]), cond=b"")
+@example(small=tape.encode([Frame(dx=5000, cyc=999_999, k=20), Frame(dx=-5000, k=20)]),
+         cond=tape.encode([Frame(dx=-600_000, k=10), Frame(dx=600_000, k=20)]))
+def test_any_tape_gets_a_verdict(tmp_path, small, cond) -> None:
+    here = tmp_path / f"v{len(list(tmp_path.iterdir()))}"
+    here.mkdir()
+    (here / "S-small.ptp").write_bytes(small)
+    (here / "S-cond.ptp").write_bytes(cond)
+    v = verify.verify(SMALL, here)
+    assert not v.passed                       # S-large.ptp is missing, at least
+    assert v.text().endswith(f"FAIL: {v.count} reason{'s' if v.count != 1 else ''}\n")
