@@ -27,7 +27,7 @@ C     ---- /CMITM/ THE ITEMS OF A TAPE AND THE TOUR THROUGH THEM -------
      1               IORI
 C     ---- /CMTWK/ WORK SPACE OF THE TOUR: GRID, NEIGHBOURS, QUEUE -----
       INTEGER MXPT, MXCEL, MXNB
-      PARAMETER (MXPT = 2 * MXITM, MXCEL = 2 * MXITM, MXNB = 10)
+      PARAMETER (MXPT = 2 * MXITM, MXCEL = 2 * MXITM, MXNB = 16)
       INTEGER NGX, NGY, KGX0, KGY0, KGCS, KDSX, KDSY, KDTX, KDTY,
      1        KQHD, KQN, KWORK, KWMAX,
      2        KQX(MXPT), KQY(MXPT), KCST(MXCEL + 1), KCCN(MXCEL),
@@ -43,10 +43,11 @@ C     ---- LOCAL -------------------------------------------------------
       EXTERNAL CMDST
 C
       KWORK = 0
-      KWMAX = 100 * NITM + 100000
+C     THE WORK BOUND: 1000 ITEMS MOVED AN ITEM, AT MOST 25 MILLION IN
+C     ALL (ABOUT A QUARTER OF A SECOND ON A MACHINE OF 2026)
+      KWMAX = MIN(1000 * NITM, 25000000) + 100000
       NROUND = 0
-C     ---- EVERY ITEM IN THE QUEUE, IN TOUR ORDER
-C     --------------------------
+C     ---- EVERY ITEM IN THE QUEUE, IN TOUR ORDER ---------------------
     5 CONTINUE
       NROUND = NROUND + 1
       NMOVE = 0
@@ -56,8 +57,7 @@ C     --------------------------
    10 CONTINUE
       KQHD = 1
       KQN = NITM
-C     ---- TAKE THE NEXT ITEM
-C     ----------------------------------------------
+C     ---- TAKE THE NEXT ITEM ------------------------------------------
    20 CONTINUE
       IF (KWORK .GT. KWMAX) RETURN
       IF (KQN .EQ. 0) THEN
@@ -111,8 +111,7 @@ C           (AN ITEM WHOSE ENDS ARE ONE POINT HAS BOTH KINDS THERE)
             GAIN = CMDST(IX1, IY1, IX2, IY2) + CMDST(IX3, IY3, IX4, IY4)
      1           - CMDST(IX1, IY1, IX3, IY3) - CMDST(IX2, IY2, IX4, IY4)
             IF (GAIN .LE. 1.0D-6) GOTO 50
-C           ---- TAKE THE MOVE; LOOK AGAIN AT THE FOUR ITEMS CONCERNED
-C           ---
+C           ---- TAKE THE MOVE; LOOK AGAIN AT THE FOUR ITEMS CONCERNED -
             CALL CMTREV(IA + 1, IB)
             NMOVE = NMOVE + 1
             IF (IA .GE. 1) CALL CMQPSH(ITOUR(IA))
@@ -123,8 +122,7 @@ C           ---
             GOTO 25
    50    CONTINUE
    60 CONTINUE
-C     ---- NO 2-OPT MOVE: TRY MOVING THE ITEM ELSEWHERE
-C     -------------------
+C     ---- NO 2-OPT MOVE: TRY MOVING THE ITEM ELSEWHERE ----------------
       LIMP = 0
       IF (NROUND .GT. 1) CALL CMOROP(M, LIMP)
       NMOVE = NMOVE + LIMP

@@ -24,7 +24,7 @@ C     ---- /CMITM/ THE ITEMS OF A TAPE AND THE TOUR THROUGH THEM -------
      1               IORI
 C     ---- /CMTWK/ WORK SPACE OF THE TOUR: GRID, NEIGHBOURS, QUEUE -----
       INTEGER MXPT, MXCEL, MXNB
-      PARAMETER (MXPT = 2 * MXITM, MXCEL = 2 * MXITM, MXNB = 10)
+      PARAMETER (MXPT = 2 * MXITM, MXCEL = 2 * MXITM, MXNB = 16)
       INTEGER NGX, NGY, KGX0, KGY0, KGCS, KDSX, KDSY, KDTX, KDTY,
      1        KQHD, KQN, KWORK, KWMAX,
      2        KQX(MXPT), KQY(MXPT), KCST(MXCEL + 1), KCCN(MXCEL),
@@ -58,8 +58,7 @@ C        THE ENDS OF S, AND WHAT IS AROUND IT NOW
          BEST = 1.0D-6
          IBC = -1
          IBREV = 0
-C        ---- CANDIDATES FROM THE NEAREST ENDS OF BOTH ENDS OF S
-C        ---------
+C        ---- CANDIDATES FROM THE NEAREST ENDS OF BOTH ENDS OF S -------
          DO 40 IEND = 1, 2
             IF (IEND .EQ. 1) THEN
                ID = 2 * ITOUR(I) - 1 + IORI(ITOUR(I))
@@ -110,8 +109,7 @@ C              WHOSE ENDS ARE ONE POINT IS TRIED IN BOTH ROLES)
    30       CONTINUE
    40    CONTINUE
          IF (IBC .LT. 0) GOTO 50
-C        ---- MAKE THE MOVE; QUEUE THE ITEMS WHOSE NEIGHBOURS CHANGE
-C        -----
+C        ---- MAKE THE MOVE; QUEUE THE ITEMS WHOSE NEIGHBOURS CHANGE ---
          DO 45 L = 1, 7
             MS(L) = 0
    45    CONTINUE

@@ -56,8 +56,7 @@ C
       DO 5 I = 1, NR
          GRID(I) = ' '
     5 CONTINUE
-C     ---- RUN THE FRAMES, CYCLES UNROLLED, MARKING WHAT IS DRAWN
-C     -------
+C     ---- RUN THE FRAMES, CYCLES UNROLLED, MARKING WHAT IS DRAWN ------
       PX = 0.0D0
       PY = 0.0D0
       NEXE = 0
@@ -110,8 +109,7 @@ C     -------
       GOTO 10
    50 CONTINUE
       CALL CMPMRK(GRID, NC, NR, CW, CH, 0.0D0, 0.0D0, '+')
-C     ---- PRINT IT
-C     ---------------------------------------------------------
+C     ---- PRINT IT ----------------------------------------------------
       CALL CMFMM(NINT(CW), S1, L1)
       CALL CMFMM(NINT(CH), S2, L2)
       CALL DVPRNT(' ')

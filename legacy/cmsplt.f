@@ -38,8 +38,7 @@ C     ---- LOCAL -------------------------------------------------------
       LOGICAL LLONG
 C
       IF (IFMAX .LE. 0 .OR. NFR .LT. I1) RETURN
-C     ---- ANYTHING TO DO? ARCS BEYOND THE LIMIT ARE ERRORS
-C     --------------
+C     ---- ANYTHING TO DO? ARCS BEYOND THE LIMIT ARE ERRORS ------------
       LLONG = .FALSE.
       DO 10 I = I1, NFR
          IF (JFK(I) .EQ. 11 .OR. JFK(I) .EQ. 13) THEN
@@ -53,8 +52,7 @@ C     --------------
          END IF
    10 CONTINUE
       IF (.NOT. LLONG) RETURN
-C     ---- MOVE THE FRAMES TO THE TOP OF THE TABLE
-C     -------------------------
+C     ---- MOVE THE FRAMES TO THE TOP OF THE TABLE ---------------------
       N = NFR - I1 + 1
       IF (NFR + N .GT. MXFRM) THEN
          CALL CMFADD(0, 0, 0, 0, 0, 20, JFCRD(I1), 1)
@@ -67,8 +65,7 @@ C     -------------------------
    20 CONTINUE
       NFR = I1 - 1
       JTOP = NTOP
-C     ---- AND BACK, SPLIT
-C     ---------------------------------------------------
+C     ---- AND BACK, SPLIT ---------------------------------------------
    30 CONTINUE
       IF (JTOP .GT. MXFRM .OR. LFULL .NE. 0) RETURN
       NF = 1

@@ -65,8 +65,7 @@ C
       DO 5 K = 1, 4
          PWIN(K) = 0.0D0
     5 CONTINUE
-C     ---- THE M FRAMES OF EACH TAPE
-C     ------------------------------------
+C     ---- THE M FRAMES OF EACH TAPE -----------------------------------
       DO 20 IU = 1, 3
          NFR = 0
          DO 10 I = 1, MIN(NMAN, MXMAN)
@@ -78,8 +77,7 @@ C     ------------------------------------
          CALL TZWADD(BBOX(2), BBOX(4), 0.0D0)
    20 CONTINUE
       NFR = 0
-C     ---- PADS AND ROWS
-C     -------------------------------------------------
+C     ---- PADS AND ROWS -----------------------------------------------
       DO 30 I = 1, NPAD
          IH = MAX(KPW(I), KPH(I)) / 2
          X1 = KPX(I)
@@ -89,15 +87,13 @@ C     -------------------------------------------------
          CALL TZWADD(X1, Y1, DBLE(IH))
          CALL TZWADD(X2, Y2, DBLE(IH))
    30 CONTINUE
-C     ---- CONDUCTORS
-C     ----------------------------------------------------
+C     ---- CONDUCTORS --------------------------------------------------
       DO 50 I = 1, NCON
          DO 40 K = KCV1(I), KCV2(I)
             CALL TZWADD(DBLE(KVX(K)), DBLE(KVY(K)), KCW(I) / 2.0D0)
    40    CONTINUE
    50 CONTINUE
-C     ---- CIRCLES AND ARCS: THEIR WHOLE CIRCLE
-C     ---------------------------
+C     ---- CIRCLES AND ARCS: THEIR WHOLE CIRCLE ------------------------
       DO 60 I = 1, NARC
          R = SQRT(DBLE(KAX(I))**2 + DBLE(KAY(I))**2) + IWT(3) / 2.0D0
          CALL TZWADD(DBLE(KAXS(I) - KAX(I)), DBLE(KAYS(I) - KAY(I)), R)

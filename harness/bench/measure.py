@@ -83,18 +83,24 @@ def _hwm_kb(pid: int) -> int | None:
     return None
 
 
-def peak_rss(exe: Path, deck: Path, out: Path) -> int:
-    """Peak resident set size of one run of TENZOR, KiB (see the module doc)."""
-    proc = _start(exe, deck, out)
-    peak = 0
-    while proc.poll() is None:
-        hwm = _hwm_kb(proc.pid)
-        if hwm is not None:
-            peak = max(peak, hwm)
-        time.sleep(0.001)
-    _check(proc, deck)
-    proc.stderr.close()
-    return peak
+def peak_rss(exe: Path, deck: Path, out: Path, tries: int = 50) -> int:
+    """Peak resident set size of a run of TENZOR, KiB (see the module doc).
+
+    A run of a few milliseconds can end before the first sample is read; it is
+    then run again, up to ``tries`` times (0 if no sample was ever read)."""
+    for _ in range(tries):
+        proc = _start(exe, deck, out)
+        peak = 0
+        while proc.poll() is None:
+            hwm = _hwm_kb(proc.pid)
+            if hwm is not None:
+                peak = max(peak, hwm)
+            time.sleep(0.001)
+        _check(proc, deck)
+        proc.stderr.close()
+        if peak > 0:
+            return peak
+    return 0
 
 
 @contextmanager
