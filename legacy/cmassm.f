@@ -43,7 +43,7 @@ C     ---- /CMITM/ THE ITEMS OF A TAPE AND THE TOUR THROUGH THEM -------
      1               IORI
 C     ---- LOCAL -------------------------------------------------------
       INTEGER NM, I, IP, IEX1, IEY1, IXE, IYE, ICX, ICY, I1, ICRD,
-     1        ICOL, IDUM1, IDUM2
+     1        ICOL, IDUM1, IDUM2, NE0
       DOUBLE PRECISION DX, DY
 C
       NM = NFR
@@ -51,7 +51,10 @@ C
       ICX = NINT(MAX(MIN(DX, 1.0D9), -1.0D9))
       ICY = NINT(MAX(MIN(DY, 1.0D9), -1.0D9))
       IF (NITM .EQ. 0) RETURN
-C     ---- ENTRY AND EXIT OF EVERY ITEM --------------------------------
+C     ---- ENTRY AND EXIT OF EVERY ITEM; AN ITEM IN ERROR (A PAD BEYOND
+C     MXSTK) IS REPORTED HERE, ONCE, AND THE TAPE IS NOT BUILT FURTHER
+C     ------------------------------------------------------------------
+      NE0 = NPERR
       DO 10 I = 1, NITM
          CALL CMBODY(I, IEX(I), IEY(I))
          CALL CMDISP(NM + 1, NFR, DX, DY)
@@ -60,6 +63,7 @@ C     ---- ENTRY AND EXIT OF EVERY ITEM --------------------------------
          NFR = NM
          IF (LFULL .NE. 0) RETURN
    10 CONTINUE
+      IF (NPERR .GT. NE0) RETURN
 C     ---- THE ORDER ---------------------------------------------------
       IF (IORD .EQ. 2) THEN
          DO 20 I = 1, NITM
