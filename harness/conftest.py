@@ -32,7 +32,10 @@ def _fpm_binary(name: str) -> Path:
     """Build with fpm (a no-op when up to date) and return the path of executable `name`."""
     fpm = shutil.which("fpm")
     if fpm is None:
-        pytest.skip("fpm is not on PATH: run the tests with `make test`")
+        # a failure, not a skip: a run that silently skipped every test of the
+        # programs would look like a pass
+        pytest.fail("fpm is not on PATH: run the tests with `make test` "
+                    "(or set TENZOR_EXE / EM703_EXE to built programs)", pytrace=False)
     subprocess.run([fpm, "build"], cwd=ROOT, check=True, capture_output=True)
     out = subprocess.run([fpm, "run", "--runner", "echo", name], cwd=ROOT, check=True,
                          capture_output=True, text=True).stdout.split()
