@@ -28,6 +28,13 @@ C     ---- /CMTWK/ WORK SPACE OF THE TOUR: GRID, NEIGHBOURS, QUEUE -----
       COMMON /CMTWK/ NGX, NGY, KGX0, KGY0, KGCS, KDSX, KDSY, KDTX, KDTY,
      1               KQHD, KQN, KWORK, KWMAX, KQX, KQY, KCST, KCCN,
      2               KCEL, KSLT, KNB, KQUE, LQUE
+C     ---- /CMTWJ/ THE JOURNAL OF REVERSALS OF ONE KICK (CMKICK), AND
+C     THE LENGTH THE MOVES SINCE THE KICK HAVE TAKEN OFF THE TOUR ------
+      INTEGER MXJRN
+      PARAMETER (MXJRN = 20000)
+      INTEGER NJRN, LJRN, KJRN(2, MXJRN)
+      DOUBLE PRECISION DGAIN
+      COMMON /CMTWJ/ DGAIN, NJRN, LJRN, KJRN
 C     ---- LOCAL -------------------------------------------------------
       INTEGER IP, IC, ICX, ICY, K, IGX, IGY, IS, IQ, ISTEP, KMAX, N, J,
      1        NBI(MXNB)
@@ -51,6 +58,12 @@ C
                   IC = IGX + IGY * NGX + 1
                   DO 10 IS = KCST(IC), KCST(IC) + KCCN(IC) - 1
                      IQ = KCEL(IS)
+                     D = (DBLE(KQX(IQ)) - KQX(IP))**2 +
+     1                   (DBLE(KQY(IQ)) - KQY(IP))**2
+C                    A FULL LIST TAKES ONLY A NEARER END
+                     IF (N .EQ. MXNB) THEN
+                        IF (D .GT. NBD(N)) GOTO 10
+                     END IF
 C                    NOT ITSELF, NOT THE OTHER END OF ITS OWN ITEM,
 C                    AND AN ITEM WHOSE ENDS ARE ONE POINT ONLY ONCE
                      IF ((IQ + 1) / 2 .EQ. (IP + 1) / 2) GOTO 10
@@ -58,8 +71,6 @@ C                    AND AN ITEM WHOSE ENDS ARE ONE POINT ONLY ONCE
                         IF (KQX(IQ) .EQ. KQX(IQ-1) .AND.
      1                      KQY(IQ) .EQ. KQY(IQ-1)) GOTO 10
                      END IF
-                     D = (DBLE(KQX(IQ)) - KQX(IP))**2 +
-     1                   (DBLE(KQY(IQ)) - KQY(IP))**2
                      CALL CMKINS(NBI, NBD, N, MXNB, IQ, D)
    10             CONTINUE
    20          CONTINUE

@@ -13,10 +13,16 @@ C              FROM A QUEUE; AN ITEM WHOSE NEIGHBOURS CHANGE GOES BACK
 C              ON IT. ROUND 1 IS 2-OPT ALONE; EACH FURTHER ROUND (AT
 C              MOST 10) QUEUES EVERY ITEM AGAIN AND ADDS OR-OPT, UNTIL A
 C              ROUND MAKES NO MOVE OR THE WORK BOUND IS REACHED.
+C     IMODE   (INPUT)  INTEGER  0 = THE ROUNDS ABOVE, FROM A NEW TOUR;
+C                               1 = ONLY THE ITEMS ALREADY QUEUED AND
+C                               THOSE THEIR MOVES QUEUE, 2-OPT AND
+C                               OR-OPT, TILL THE QUEUE IS EMPTY (CMKICK)
+C     THE LENGTH THE MOVES TAKE OFF THE TOUR IS ADDED TO DGAIN.
 C     CHANGES: 2026-11-22 FIRST RECONSTRUCTION
 C=======================================================================
-      SUBROUTINE CMOPT2
+      SUBROUTINE CMOPT2(IMODE)
       IMPLICIT NONE
+      INTEGER IMODE
 C     ---- /CMITM/ THE ITEMS OF A TAPE AND THE TOUR THROUGH THEM -------
       INTEGER MXITM
       PARAMETER (MXITM = 300000)
@@ -36,17 +42,28 @@ C     ---- /CMTWK/ WORK SPACE OF THE TOUR: GRID, NEIGHBOURS, QUEUE -----
       COMMON /CMTWK/ NGX, NGY, KGX0, KGY0, KGCS, KDSX, KDSY, KDTX, KDTY,
      1               KQHD, KQN, KWORK, KWMAX, KQX, KQY, KCST, KCCN,
      2               KCEL, KSLT, KNB, KQUE, LQUE
+C     ---- /CMTWJ/ THE JOURNAL OF REVERSALS OF ONE KICK (CMKICK), AND
+C     THE LENGTH THE MOVES SINCE THE KICK HAVE TAKEN OFF THE TOUR ------
+      INTEGER MXJRN
+      PARAMETER (MXJRN = 20000)
+      INTEGER NJRN, LJRN, KJRN(2, MXJRN)
+      DOUBLE PRECISION DGAIN
+      COMMON /CMTWJ/ DGAIN, NJRN, LJRN, KJRN
 C     ---- LOCAL -------------------------------------------------------
       INTEGER M, IP, J, K, IE, IQ, M2, IA, IB, ISIDE, LIMP, NROUND,
-     1        NMOVE, IX1, IY1, IX2, IY2, IX3, IY3, IX4, IY4
-      DOUBLE PRECISION D1, DQ, GAIN, CMDST
-      EXTERNAL CMDST
+     1        NMOVE, IX2, IY2, IX4, IY4
+      DOUBLE PRECISION D1, DQ, GAIN, DIST
+      INTEGER JX1, JY1, JX2, JY2
+C     THE DISTANCE OF TWO POINTS, AS CMDST, BUT IN LINE
+      DIST(JX1, JY1, JX2, JY2) = SQRT((DBLE(JX1) - JX2)**2 +
+     1   (DBLE(JY1) - JY2)**2)
 C
-      KWORK = 0
-C     THE WORK BOUND: 1000 ITEMS MOVED AN ITEM, AT MOST 10 MILLION IN
-C     ALL (ABOUT A TENTH OF A SECOND ON A MACHINE OF 2026)
-      KWMAX = MIN(1000 * NITM, 10000000) + 100000
       NROUND = 0
+      IF (IMODE .EQ. 1) THEN
+         NROUND = 2
+         NMOVE = 0
+         GOTO 20
+      END IF
 C     ---- EVERY ITEM IN THE QUEUE, IN TOUR ORDER ---------------------
     5 CONTINUE
       NROUND = NROUND + 1
@@ -61,6 +78,7 @@ C     ---- TAKE THE NEXT ITEM ------------------------------------------
    20 CONTINUE
       IF (KWORK .GT. KWMAX) RETURN
       IF (KQN .EQ. 0) THEN
+         IF (IMODE .EQ. 1) RETURN
          IF ((NMOVE .EQ. 0 .AND. NROUND .GT. 1) .OR. NROUND .GE. 10)
      1      RETURN
          GOTO 5
@@ -81,11 +99,11 @@ C           THE MOVE INTO M: EXIT(IP-1) TO ENTRY(IP)
             IE = 2 * M - 1 + IORI(M)
             CALL CMEND(IP - 1, 1, IX2, IY2)
          END IF
-         D1 = CMDST(KQX(IE), KQY(IE), IX2, IY2)
+         D1 = DIST(KQX(IE), KQY(IE), IX2, IY2)
          DO 50 K = 1, MXNB
             IQ = KNB(K, IE)
             IF (IQ .EQ. 0) GOTO 60
-            DQ = CMDST(KQX(IE), KQY(IE), KQX(IQ), KQY(IQ))
+            DQ = DIST(KQX(IE), KQY(IE), KQX(IQ), KQY(IQ))
             IF (DQ .GE. D1 - 1.0D-6) GOTO 60
             M2 = (IQ + 1) / 2
 C           IQ MUST BE THE SAME KIND OF END OF ITS ITEM AS IE IS OF M
@@ -104,15 +122,19 @@ C           (AN ITEM WHOSE ENDS ARE ONE POINT HAS BOTH KINDS THERE)
                IB = IB - 1
             END IF
             IF (IA .EQ. IB) GOTO 50
-            CALL CMEND(IA, 1, IX1, IY1)
-            CALL CMEND(IA + 1, 2, IX2, IY2)
-            CALL CMEND(IB, 1, IX3, IY3)
-            CALL CMEND(IB + 1, 2, IX4, IY4)
-            GAIN = CMDST(IX1, IY1, IX2, IY2) + CMDST(IX3, IY3, IX4, IY4)
-     1           - CMDST(IX1, IY1, IX3, IY3) - CMDST(IX2, IY2, IX4, IY4)
+C           OUT: THE MOVES IE-(IX2,IY2) AND IQ-(IX4,IY4), THE END
+C           BESIDE IQ; IN: THE MOVES IE-IQ AND (IX2,IY2)-(IX4,IY4)
+            IF (ISIDE .EQ. 1) THEN
+               CALL CMEND(J + 1, 2, IX4, IY4)
+            ELSE
+               CALL CMEND(J - 1, 1, IX4, IY4)
+            END IF
+            GAIN = D1 + DIST(KQX(IQ), KQY(IQ), IX4, IY4)
+     1           - DQ - DIST(IX2, IY2, IX4, IY4)
             IF (GAIN .LE. 1.0D-6) GOTO 50
 C           ---- TAKE THE MOVE; LOOK AGAIN AT THE FOUR ITEMS CONCERNED -
             CALL CMTREV(IA + 1, IB)
+            DGAIN = DGAIN + GAIN
             NMOVE = NMOVE + 1
             IF (IA .GE. 1) CALL CMQPSH(ITOUR(IA))
             CALL CMQPSH(ITOUR(IA + 1))

@@ -5,7 +5,8 @@ C     SOURCE:  RECONSTRUCTED (SEE CMTOUR). THE SEGMENT S OF K ITEMS
 C              STARTING AT ITEM M (K = 1, 2, 3) IS TAKEN OUT AND PUT
 C              BETWEEN THE ITEMS AT PLACES C AND C+1, DRAWN FORWARD OR
 C              BACKWARD, WHEN THAT SHORTENS THE TOUR. C IS FOUND FROM
-C              THE NEAREST ENDS (KNB) OF THE TWO ENDS OF S. THE MOVE IS
+C              THE NEAREST ENDS (KNB) OF THE TWO ENDS OF S THAT ARE
+C              NEARER TO IT THAN WHAT TAKING S OUT SAVES. THE MOVE IS
 C              MADE BY THREE REVERSALS OF THE TOUR.
 C     M       (INPUT)  INTEGER  THE FIRST ITEM OF THE SEGMENT
 C     LIMP    (OUTPUT) INTEGER  1 IF THE TOUR WAS CHANGED, ELSE 0
@@ -33,14 +34,24 @@ C     ---- /CMTWK/ WORK SPACE OF THE TOUR: GRID, NEIGHBOURS, QUEUE -----
       COMMON /CMTWK/ NGX, NGY, KGX0, KGY0, KGCS, KDSX, KDSY, KDTX, KDTY,
      1               KQHD, KQN, KWORK, KWMAX, KQX, KQY, KCST, KCCN,
      2               KCEL, KSLT, KNB, KQUE, LQUE
+C     ---- /CMTWJ/ THE JOURNAL OF REVERSALS OF ONE KICK (CMKICK), AND
+C     THE LENGTH THE MOVES SINCE THE KICK HAVE TAKEN OFF THE TOUR ------
+      INTEGER MXJRN
+      PARAMETER (MXJRN = 20000)
+      INTEGER NJRN, LJRN, KJRN(2, MXJRN)
+      DOUBLE PRECISION DGAIN
+      COMMON /CMTWJ/ DGAIN, NJRN, LJRN, KJRN
 C     ---- LOCAL -------------------------------------------------------
       INTEGER I, J2, K, L, IEND, ID, IQ, M2, J, IC, IREV, NB, IBC,
      1        IBREV, IXS, IYS, IXE, IYE, IXP, IYP, IXN, IYN, IXC, IYC,
      2        IXD, IYD, MS(7)
       LOGICAL LEXIT, LONE
       INTEGER IROLE
-      DOUBLE PRECISION REM, ADD, GAIN, BEST, CMDST
-      EXTERNAL CMDST
+      DOUBLE PRECISION REM, ADD, GAIN, BEST, DIST
+      INTEGER JX1, JY1, JX2, JY2
+C     THE DISTANCE OF TWO POINTS, AS CMDST, BUT IN LINE
+      DIST(JX1, JY1, JX2, JY2) = SQRT((DBLE(JX1) - JX2)**2 +
+     1   (DBLE(JY1) - JY2)**2)
 C
       LIMP = 0
       I = IPOS(M)
@@ -52,8 +63,8 @@ C        THE ENDS OF S, AND WHAT IS AROUND IT NOW
          CALL CMEND(J2, 1, IXE, IYE)
          CALL CMEND(I - 1, 1, IXP, IYP)
          CALL CMEND(J2 + 1, 2, IXN, IYN)
-         REM = CMDST(IXP, IYP, IXS, IYS) + CMDST(IXE, IYE, IXN, IYN)
-     1       - CMDST(IXP, IYP, IXN, IYN)
+         REM = DIST(IXP, IYP, IXS, IYS) + DIST(IXE, IYE, IXN, IYN)
+     1       - DIST(IXP, IYP, IXN, IYN)
          IF (REM .LE. 1.0D-6) GOTO 50
          BEST = 1.0D-6
          IBC = -1
@@ -68,6 +79,10 @@ C        ---- CANDIDATES FROM THE NEAREST ENDS OF BOTH ENDS OF S -------
             DO 30 NB = 1, MXNB
                IQ = KNB(NB, ID)
                IF (IQ .EQ. 0) GOTO 40
+C              THE NEW MOVE TO OR FROM S MUST BE SHORTER THAN WHAT
+C              TAKING S OUT SAVES; THE NEIGHBOURS ARE NEAREST FIRST
+               IF (DIST(KQX(ID), KQY(ID), KQX(IQ), KQY(IQ)) .GE. REM)
+     1            GOTO 40
                M2 = (IQ + 1) / 2
                J = IPOS(M2)
                IF (J .GE. I .AND. J .LE. J2) GOTO 30
@@ -87,16 +102,24 @@ C              WHOSE ENDS ARE ONE POINT IS TRIED IN BOTH ROLES)
                IREV = 0
                IF ((IEND .EQ. 1) .NEQV. LEXIT) IREV = 1
                IF (IC .GE. I - 1 .AND. IC .LE. J2) GOTO 28
-               CALL CMEND(IC, 1, IXC, IYC)
-               CALL CMEND(IC + 1, 2, IXD, IYD)
-               IF (IREV .EQ. 0) THEN
-                  ADD = CMDST(IXC, IYC, IXS, IYS) +
-     1                  CMDST(IXE, IYE, IXD, IYD)
+C              IQ IS ONE OF THE TWO ENDS S GOES BETWEEN
+               IF (LEXIT) THEN
+                  IXC = KQX(IQ)
+                  IYC = KQY(IQ)
+                  CALL CMEND(IC + 1, 2, IXD, IYD)
                ELSE
-                  ADD = CMDST(IXC, IYC, IXE, IYE) +
-     1                  CMDST(IXS, IYS, IXD, IYD)
+                  CALL CMEND(IC, 1, IXC, IYC)
+                  IXD = KQX(IQ)
+                  IYD = KQY(IQ)
                END IF
-               ADD = ADD - CMDST(IXC, IYC, IXD, IYD)
+               IF (IREV .EQ. 0) THEN
+                  ADD = DIST(IXC, IYC, IXS, IYS) +
+     1                  DIST(IXE, IYE, IXD, IYD)
+               ELSE
+                  ADD = DIST(IXC, IYC, IXE, IYE) +
+     1                  DIST(IXS, IYS, IXD, IYD)
+               END IF
+               ADD = ADD - DIST(IXC, IYC, IXD, IYD)
                GAIN = REM - ADD
                IF (GAIN .GT. BEST) THEN
                   BEST = GAIN
@@ -132,6 +155,7 @@ C        ---- MAKE THE MOVE; QUEUE THE ITEMS WHOSE NEIGHBOURS CHANGE ---
          DO 48 L = 1, 7
             IF (MS(L) .NE. 0) CALL CMQPSH(MS(L))
    48    CONTINUE
+         DGAIN = DGAIN + BEST
          LIMP = 1
          RETURN
    50 CONTINUE

@@ -1,0 +1,118 @@
+C=======================================================================
+C     CMKICK - SHORTEN A GOOD TOUR FURTHER BY KICKS             (SHARED)
+C     SOURCE:  RECONSTRUCTED (SEE CMTOUR). 2-OPT AND OR-OPT STOP AT A
+C              TOUR NO SINGLE MOVE OF THEIRS CAN SHORTEN. A KICK CUTS
+C              THE TOUR AFTER PLACES P, Q AND R (P .LT. Q .LT. R, AT
+C              MOST 50 ITEMS APART) AND SWAPS THE TWO RUNS BETWEEN:
+C              A B C D BECOMES A C B D (A "DOUBLE BRIDGE", WHICH NO
+C              2-OPT MOVE CAN MAKE). THE ITEMS AROUND THE CUTS ARE
+C              QUEUED AND CMOPT2 REPAIRS THE TOUR AROUND THEM. IF THE
+C              TOUR IS THEN SHORTER THE CHANGE IS KEPT, ELSE EVERY
+C              REVERSAL IT MADE IS UNDONE FROM THE JOURNAL, LAST FIRST.
+C              THE PLACES ARE DRAWN BY THE MINIMAL STANDARD GENERATOR
+C              OF LEWIS, GOODMAN AND MILLER (1969), IN SCHRAGE'S FORM
+C              FOR 32-BIT INTEGERS, FROM A FIXED SEED: THE SAME DECK
+C              GIVES THE SAME TOUR.
+C     NKICK   (INPUT)  INTEGER  THE NUMBER OF KICKS; FEWER WHEN THE
+C                               WORK BOUND KWMAX IS REACHED
+C     CHANGES: 2026-11-22 FIRST RECONSTRUCTION
+C=======================================================================
+      SUBROUTINE CMKICK(NKICK)
+      IMPLICIT NONE
+      INTEGER NKICK
+C     ---- /CMITM/ THE ITEMS OF A TAPE AND THE TOUR THROUGH THEM -------
+      INTEGER MXITM
+      PARAMETER (MXITM = 300000)
+      INTEGER NITM, IKND(MXITM), IREF(MXITM), IEX(MXITM), IEY(MXITM),
+     1        IXX(MXITM), IXY(MXITM), ITOUR(MXITM), IPOS(MXITM),
+     2        IORI(MXITM)
+      COMMON /CMITM/ NITM, IKND, IREF, IEX, IEY, IXX, IXY, ITOUR, IPOS,
+     1               IORI
+C     ---- /CMTWK/ WORK SPACE OF THE TOUR: GRID, NEIGHBOURS, QUEUE -----
+      INTEGER MXPT, MXCEL, MXNB
+      PARAMETER (MXPT = 2 * MXITM, MXCEL = 2 * MXITM, MXNB = 16)
+      INTEGER NGX, NGY, KGX0, KGY0, KGCS, KDSX, KDSY, KDTX, KDTY,
+     1        KQHD, KQN, KWORK, KWMAX,
+     2        KQX(MXPT), KQY(MXPT), KCST(MXCEL + 1), KCCN(MXCEL),
+     3        KCEL(MXPT), KSLT(MXPT), KNB(MXNB, MXPT), KQUE(MXITM),
+     4        LQUE(MXITM)
+      COMMON /CMTWK/ NGX, NGY, KGX0, KGY0, KGCS, KDSX, KDSY, KDTX, KDTY,
+     1               KQHD, KQN, KWORK, KWMAX, KQX, KQY, KCST, KCCN,
+     2               KCEL, KSLT, KNB, KQUE, LQUE
+C     ---- /CMTWJ/ THE JOURNAL OF REVERSALS OF ONE KICK (CMKICK), AND
+C     THE LENGTH THE MOVES SINCE THE KICK HAVE TAKEN OFF THE TOUR ------
+      INTEGER MXJRN
+      PARAMETER (MXJRN = 20000)
+      INTEGER NJRN, LJRN, KJRN(2, MXJRN)
+      DOUBLE PRECISION DGAIN
+      COMMON /CMTWJ/ DGAIN, NJRN, LJRN, KJRN
+C     ---- LOCAL -------------------------------------------------------
+      INTEGER KK, J, LMAX, L1, L2, IP, IQ, IR, ISEED, IK, M,
+     1        IX1, IY1, IX2, IY2, IX3, IY3, IX4, IY4, IX5, IY5,
+     2        IX6, IY6
+      DOUBLE PRECISION DIST
+      INTEGER JX1, JY1, JX2, JY2
+C     THE DISTANCE OF TWO POINTS, AS CMDST, BUT IN LINE
+      DIST(JX1, JY1, JX2, JY2) = SQRT((DBLE(JX1) - JX2)**2 +
+     1   (DBLE(JY1) - JY2)**2)
+C
+      IF (NITM .LT. 8) RETURN
+      ISEED = 1977
+      LMAX = MIN(50, NITM / 3)
+      DO 50 KK = 1, NKICK
+         IF (KWORK .GT. KWMAX) GOTO 60
+C        ---- EMPTY A QUEUE THE WORK BOUND LEFT ------------------------
+   20    CONTINUE
+         IF (KQN .GT. 0) THEN
+            M = KQUE(KQHD)
+            LQUE(M) = 0
+            KQHD = MOD(KQHD, NITM) + 1
+            KQN = KQN - 1
+            GOTO 20
+         END IF
+C        ---- THE CUTS: P, Q = P + L1, R = Q + L2 .LE. NITM ------------
+         CALL CMRAND(ISEED)
+         L1 = 1 + MOD(ISEED, LMAX)
+         CALL CMRAND(ISEED)
+         L2 = 1 + MOD(ISEED, LMAX)
+         CALL CMRAND(ISEED)
+         IP = MOD(ISEED, NITM - L1 - L2 + 1)
+         IQ = IP + L1
+         IR = IQ + L2
+C        ---- WHAT THE KICK ADDS TO THE TOUR (A NEGATIVE GAIN) ---------
+         CALL CMEND(IP, 1, IX1, IY1)
+         CALL CMEND(IP + 1, 2, IX2, IY2)
+         CALL CMEND(IQ, 1, IX3, IY3)
+         CALL CMEND(IQ + 1, 2, IX4, IY4)
+         CALL CMEND(IR, 1, IX5, IY5)
+         CALL CMEND(IR + 1, 2, IX6, IY6)
+         DGAIN = DIST(IX1, IY1, IX2, IY2) + DIST(IX3, IY3, IX4, IY4)
+     1         + DIST(IX5, IY5, IX6, IY6) - DIST(IX1, IY1, IX4, IY4)
+     2         - DIST(IX5, IY5, IX2, IY2) - DIST(IX3, IY3, IX6, IY6)
+C        ---- A B C D TO A C B D BY THREE REVERSALS, JOURNALLED --------
+         NJRN = 0
+         LJRN = 1
+         CALL CMTREV(IP + 1, IR)
+         CALL CMTREV(IP + 1, IP + L2)
+         CALL CMTREV(IP + L2 + 1, IR)
+C        ---- REPAIR AROUND THE THREE NEW MOVES ------------------------
+         DO 10 IK = IP, IP + 1
+            IF (IK .GE. 1) CALL CMQPSH(ITOUR(IK))
+            IF (IK + L2 .LE. NITM) CALL CMQPSH(ITOUR(IK + L2))
+            IF (IK + L1 + L2 .LE. NITM) CALL CMQPSH(ITOUR(IK + L1 + L2))
+   10    CONTINUE
+         CALL CMOPT2(1)
+C        ---- KEEP A SHORTER TOUR; ELSE UNDO, LAST REVERSAL FIRST ------
+         IF (LJRN .EQ. 1 .AND. DGAIN .LE. 1.0D-6) THEN
+            LJRN = 0
+            DO 30 J = NJRN, 1, -1
+               CALL CMTREV(KJRN(1, J), KJRN(2, J))
+   30       CONTINUE
+         END IF
+         LJRN = 0
+   50 CONTINUE
+   60 CONTINUE
+      LJRN = 0
+      RETURN
+C     END OF CMKICK
+      END
