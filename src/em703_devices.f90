@@ -29,6 +29,8 @@ module em703_devices
         integer :: n = 0
     contains
         procedure :: append => buffer_append
+        procedure :: put => buffer_put
+        procedure :: line => buffer_line
         procedure :: clear => buffer_clear
     end type byte_buffer
 
@@ -59,6 +61,30 @@ contains
         self%data(self%n + 1:need) = s
         self%n = need
     end subroutine buffer_append
+
+    !> One character (a tape row): the same as append, without the call of
+    !> memmove for a single byte that append costs (millions of rows a board).
+    subroutine buffer_put(self, c)
+        class(byte_buffer), intent(inout) :: self
+        character, intent(in) :: c
+        if (allocated(self%data)) then
+            if (self%n < len(self%data)) then
+                self%n = self%n + 1
+                self%data(self%n:self%n) = c
+                return
+            end if
+        end if
+        call self%append(c)
+    end subroutine buffer_put
+
+    !> A line of text without its trailing blanks, then a newline; without the
+    !> temporary that trim(line) // nl would allocate.
+    subroutine buffer_line(self, line)
+        class(byte_buffer), intent(inout) :: self
+        character(len=*), intent(in) :: line
+        call self%append(line(1:len_trim(line)))
+        call self%put(nl)
+    end subroutine buffer_line
 
     subroutine buffer_clear(self)
         class(byte_buffer), intent(inout) :: self
@@ -151,7 +177,7 @@ contains
     !> The line printer: one line of the current package's listing.
     subroutine dev_print(line)
         character(len=*), intent(in) :: line
-        call listing%append(trim(line) // nl)
+        call listing%line(line)
     end subroutine dev_print
 
     !> The operator's console: one message, prefixed with the deck's name.
@@ -176,18 +202,18 @@ contains
     !> A tape punch: one row (0..31) on tape unit iu.
     subroutine dev_punch(iu, row)
         integer, intent(in) :: iu, row
-        call tape(iu)%append(achar(iand(row, 31)))
+        call tape(iu)%put(achar(iand(row, 31)))
     end subroutine dev_punch
 
     subroutine dev_text(iu, line)
         integer, intent(in) :: iu
         character(len=*), intent(in) :: line
-        call text(iu)%append(trim(line) // nl)
+        call text(iu)%line(line)
     end subroutine dev_text
 
     subroutine dev_job(line)
         character(len=*), intent(in) :: line
-        call job%append(trim(line) // nl)
+        call job%line(line)
     end subroutine dev_job
 
     !> Close the package: the listing always, the tapes, texts and job sheet only
