@@ -106,6 +106,7 @@ def run_board(board: boards.Board, exe: Path, scratch: Path, repeats: int,
         "cyc_cond": stats["cond"].cycle_ratio,
         "cyc_pads": ((stats["small"].rows + stats["large"].rows)
                      / (stats["small"].unrolled_rows + stats["large"].unrolled_rows)),
+        "cyc_all": rows / sum(s.unrolled_rows for s in stats.values()),
         "tour_deck_m": tour["deck"], "tour_nn_m": nn, "tour_tenzor_m": tour["tenzor"],
         "tour_ref_m": ref,
         "tenzor_vs_ref": tour["tenzor"] / ref if ref else None,

@@ -23,6 +23,7 @@
 from __future__ import annotations
 
 import os
+import shutil
 import subprocess
 import time
 from contextlib import contextmanager
@@ -49,7 +50,14 @@ def _start(exe: Path, deck: Path, out: Path) -> subprocess.Popen:
 def run_once(exe: Path, deck: Path, out: Path) -> tuple[float, float]:
     """One run of TENZOR, deck to tapes: (wall seconds, CPU seconds, user
     and system, of that process from ``os.wait4``).  Raises RuntimeError if
-    it does not exit 0."""
+    it does not exit 0.
+
+    The output directory is emptied first (outside the timing), so every run
+    writes new files as a first run does: replacing the files of the run
+    before would add the file system's work of the rename over an existing
+    file (ext4 writes the new data out before such a rename,
+    ``auto_da_alloc``), which is the disk's time, not TENZOR's."""
+    shutil.rmtree(out, ignore_errors=True)
     t = time.perf_counter()
     proc = _start(exe, deck, out)
     _, status, usage = os.wait4(proc.pid, 0)
@@ -89,6 +97,7 @@ def peak_rss(exe: Path, deck: Path, out: Path, tries: int = 50) -> int:
     A run of a few milliseconds can end before the first sample is read; it is
     then run again, up to ``tries`` times (0 if no sample was ever read)."""
     for _ in range(tries):
+        shutil.rmtree(out, ignore_errors=True)
         proc = _start(exe, deck, out)
         peak = 0
         while proc.poll() is None:

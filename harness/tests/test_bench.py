@@ -13,7 +13,7 @@ from pathlib import Path
 import pytest
 
 from harness.bench import __main__ as bench_main
-from harness.bench import boards, report, tours
+from harness.bench import boards, measure, report, tours
 
 ROOT = Path(__file__).resolve().parents[2]
 
@@ -45,7 +45,7 @@ def test_figures_are_sane(quick_run):
         assert 0 < v["frames"] < v["rows"], where
         assert math.isclose(v["frames_per_s"], v["frames"] / v["tenzor_s"], rel_tol=1e-3), where
         assert v["drawn_m"] > 0 and v["travel_m"] > 0 and v["run_min"] > 0, where
-        for key in ("cyc_small", "cyc_large", "cyc_cond", "cyc_pads"):
+        for key in ("cyc_small", "cyc_large", "cyc_cond", "cyc_pads", "cyc_all"):
             assert 0 < v[key] <= 1, (where, key)
         # every tour visits the same items: the reference is the shortest,
         # TENZOR beats the deck order, and no tour is shorter than the reference
@@ -103,3 +103,26 @@ def test_performance_md_shows_the_recorded_run():
     rows = report.read_csv(ROOT / "harness" / "bench" / "results" / "bench.csv")
     doc = (ROOT / "docs" / "PERFORMANCE.md").read_text(encoding="utf-8")
     assert report.table(rows, markdown=True) in doc
+
+
+@pytest.mark.skipif(not tours.lkh_available(), reason="elkai (LKH-3) is not installed")
+@pytest.mark.parametrize("dist", ["uniform", "grid"])
+def test_tenzor_tour_is_within_five_percent_of_lkh(dist, run_tenzor):
+    """Issue 7's travel target on a 1 000-pad board: the tour TENZOR punches
+    (read back from its simulated tapes) is at most 5 % longer than LKH-3's
+    through the same items, and shorter than plain nearest neighbour's."""
+    board = boards.make_board(dist, 1000)
+    proc, out = run_tenzor(board.deck())
+    assert proc.returncode == 0, proc.stderr
+    stats = {t: measure.read_tape(out / f"{board.name}-{t}.ptp") for t in ("small", "large")}
+    length = {"tenzor": 0.0, "nn": 0.0, "ref": 0.0}
+    for key, st in stats.items():
+        pads = [p for p in board.pads if p.tape == key]
+        items, order = tours.recover_order(st.run, pads)
+        tours.check_order(len(items), order)
+        length["tenzor"] += tours.tour_length(items, order)
+        length["nn"] += tours.tour_length(items, tours.nearest_neighbour(items))
+        ref, _ = tours.lkh_tour(items)
+        length["ref"] += tours.tour_length(items, ref)
+    assert length["tenzor"] <= 1.05 * length["ref"], length
+    assert length["tenzor"] < length["nn"], length
