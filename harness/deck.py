@@ -591,7 +591,14 @@ class _Builder:
         arc = ArcCard(no, cw, *v)
         rs = math.hypot(arc.xs - arc.xc, arc.ys - arc.yc)
         re_ = math.hypot(arc.xe - arc.xc, arc.ye - arc.yc)
-        if rs == 0 or abs(rs - re_) > 1:
+        # the same checks as TENZOR's TZACRD, in its order
+        if rs == 0:
+            raise CardError(no, "the start of the arc is its centre")
+        if re_ == 0:
+            raise CardError(no, "the end of the arc is its centre")
+        if (arc.xs, arc.ys) == (arc.xe, arc.ye):
+            raise CardError(no, "the arc ends where it starts (a full circle is an O card)")
+        if abs(rs - re_) > 1:
             raise CardError(no, f"arc start and end not on one circle ({rs:.2f}, {re_:.2f})")
         self.arcs.append(arc)
 

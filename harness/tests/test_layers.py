@@ -22,7 +22,7 @@ from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
 from harness import cards
-from harness.deck import LAYERS, Package, parse_deck
+from harness.deck import LAYERS, CardError, Package, parse_deck
 from harness.raster import compare
 from harness.sim import simulate
 from harness.tape import TapeError, decode
@@ -197,3 +197,24 @@ def test_card_fields_are_fortran_fields() -> None:
                 "B\n+         1.00      2.00\nE\n"):
         with pytest.raises(ValueError, match="card"):
             parse_deck(bad)
+
+
+@pytest.mark.parametrize("arc, col, words", [
+    (("+", 1000, 1000, 1000, 1000, 1500, 1000), 31, "start of the arc is its centre"),
+    (("+", 1000, 1000, 1001, 1000, 1000, 1000), 51, "end of the arc is its centre"),
+    (("+", 1000, 1000, 1500, 1000, 1500, 1000), 51, "ends where it starts"),
+])
+def test_oracle_and_tenzor_reject_the_same_degenerate_arcs(run_tenzor, arc, col, words) -> None:
+    """An A card whose start or end is its centre, or whose end is its start,
+    is refused by TENZOR (card and column named) and by the harness's parser
+    alike: the oracle must not draw what TENZOR will not punch."""
+    card = cards.a_card(*arc)
+    deck = cards.deck([cards.CardPackage("ARCS", [card])])
+    no = deck.splitlines().index(card) + 1
+    with pytest.raises(CardError) as err:
+        parse_deck(deck)
+    assert err.value.card == no and words in str(err.value)
+    proc, _ = run_tenzor(deck)
+    assert proc.returncode == 1
+    text = proc.stderr.decode()
+    assert f"CARD {no} COL {col}:" in text and words.upper() in text, text
