@@ -47,7 +47,7 @@ C     ---- LOCAL -------------------------------------------------------
      2        IXD, IYD, MS(7)
       LOGICAL LEXIT, LONE
       INTEGER IROLE
-      DOUBLE PRECISION REM, ADD, GAIN, BEST, DIST
+      DOUBLE PRECISION REM, ADD, GAIN, BEST, DIST, DPS
       INTEGER JX1, JY1, JX2, JY2
 C     THE DISTANCE OF TWO POINTS, AS CMDST, BUT IN LINE
       DIST(JX1, JY1, JX2, JY2) = SQRT((DBLE(JX1) - JX2)**2 +
@@ -55,15 +55,17 @@ C     THE DISTANCE OF TWO POINTS, AS CMDST, BUT IN LINE
 C
       LIMP = 0
       I = IPOS(M)
+C     THE START OF S, AND THE MOVE INTO IT
+      CALL CMEND(I, 2, IXS, IYS)
+      CALL CMEND(I - 1, 1, IXP, IYP)
+      DPS = DIST(IXP, IYP, IXS, IYS)
       DO 50 K = 1, 3
          J2 = I + K - 1
          IF (J2 .GT. NITM) RETURN
-C        THE ENDS OF S, AND WHAT IS AROUND IT NOW
-         CALL CMEND(I, 2, IXS, IYS)
+C        THE END OF S, AND THE MOVE OUT OF IT
          CALL CMEND(J2, 1, IXE, IYE)
-         CALL CMEND(I - 1, 1, IXP, IYP)
          CALL CMEND(J2 + 1, 2, IXN, IYN)
-         REM = DIST(IXP, IYP, IXS, IYS) + DIST(IXE, IYE, IXN, IYN)
+         REM = DPS + DIST(IXE, IYE, IXN, IYN)
      1       - DIST(IXP, IYP, IXN, IYN)
          IF (REM .LE. 1.0D-6) GOTO 50
          BEST = 1.0D-6
