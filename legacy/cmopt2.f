@@ -88,6 +88,9 @@ C     ---- TAKE THE NEXT ITEM ------------------------------------------
       KQN = KQN - 1
       LQUE(M) = 0
    25 CONTINUE
+C     A KICK'S REPAIR STOPS BEFORE ITS JOURNAL IS FULL (A MOVE WRITES
+C     AT MOST THREE REVERSALS), SO THAT CMKICK CAN ALWAYS UNDO IT
+      IF (IMODE .EQ. 1 .AND. NJRN .GT. MXJRN - 3) RETURN
       DO 60 ISIDE = 1, 2
          IP = IPOS(M)
          IF (ISIDE .EQ. 1) THEN
