@@ -25,11 +25,11 @@ program em703
     case ('sim')
         status = do_sim()
     case ('svg')
-        status = do_svg()
+        status = do_job('svg')
     case ('gcode')
         status = do_gcode()
     case ('gerber')
-        status = do_gerber()
+        status = do_job('gerber')
     case ('punch')
         status = do_punch()
     case ('view')
@@ -188,7 +188,9 @@ contains
         do_sim = run_sim(file, code, num, den, sx, sy, svg, tool)
     end function do_sim
 
-    integer function do_svg()
+    !> em703 svg|gerber [-o FILE] JOB: the two commands that draw a whole job.
+    integer function do_job(sub)
+        character(len=*), intent(in) :: sub
         character(len=:), allocatable :: file, out
         integer :: i
         file = ''
@@ -198,18 +200,22 @@ contains
             arg = get_arg(i)
             select case (arg)
             case ('-h', '--help')
-                call help('svg')
+                call help(sub)
                 stop 0, quiet=.true.
             case ('-o', '--output')
-                out = option_value('svg', i)
+                out = option_value(sub, i)
             case default
-                call take_file('svg', file, arg)
+                call take_file(sub, file, arg)
             end select
             i = i + 1
         end do
-        call need_file('svg', file, 'JOB (a job sheet NAME.job)')
-        do_svg = run_svg(file, out)
-    end function do_svg
+        call need_file(sub, file, 'JOB (a job sheet NAME.job)')
+        if (sub == 'svg') then
+            do_job = run_svg(file, out)
+        else
+            do_job = run_gerber(file, out)
+        end if
+    end function do_job
 
     integer function do_gcode()
         character(len=:), allocatable :: file, out, v
@@ -244,29 +250,6 @@ contains
         call need_file('gcode', file, 'TAPE or JOB')
         do_gcode = run_gcode(file, tol, use_z, out)
     end function do_gcode
-
-    integer function do_gerber()
-        character(len=:), allocatable :: file, out
-        integer :: i
-        file = ''
-        out = ''
-        i = 2
-        do while (i <= nargs)
-            arg = get_arg(i)
-            select case (arg)
-            case ('-h', '--help')
-                call help('gerber')
-                stop 0, quiet=.true.
-            case ('-o', '--output')
-                out = option_value('gerber', i)
-            case default
-                call take_file('gerber', file, arg)
-            end select
-            i = i + 1
-        end do
-        call need_file('gerber', file, 'JOB (a job sheet NAME.job)')
-        do_gerber = run_gerber(file, out)
-    end function do_gerber
 
     integer function do_punch()
         character(len=:), allocatable :: file, out, code, v
