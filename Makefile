@@ -1,11 +1,14 @@
 # The commands of README.md. Each sets up what is missing first (scripts/setup.sh).
-#   make demo   punch the tapes of the bundled demo board into out/
-#   make test   run every test: the Fortran tests (fpm test) and the harness (pytest)
-#   make bench  the benchmarks of docs/PERFORMANCE.md (about 10 minutes; BENCH_ARGS=--quick
-#               for the 100- and 1 000-pad boards): a table, and out/bench/bench.csv, .svg
+#   make demo      punch the tapes of the bundled demo board into out/
+#   make test      run every test: the Fortran tests (fpm test), then pytest over the
+#                  oracle (harness/), the neighbouring systems (seeds/) and the benchmarks'
+#                  own tests (bench/)
+#   make examples  punch every deck of examples/ into out/ (docs/TOOLS.md's examples)
+#   make bench     the benchmarks of docs/PERFORMANCE.md (about 4 minutes; BENCH_ARGS=--quick
+#                  for the 100- and 1 000-pad boards): a table, and out/bench/bench.csv, .svg
 # and, for CI (.ci/run):
-#   make test-checks   the Fortran tests and every harness test that runs tenzor
-#                      or em703, again, on a build with gfortran's run-time checks
+#   make test-checks   the Fortran tests and every test that runs tenzor or em703,
+#                      again, on a build with gfortran's run-time checks
 SHELL := /bin/bash
 export PATH := $(CURDIR)/.venv/bin:$(PATH)
 DECK ?= examples/demo.crd
@@ -18,7 +21,10 @@ BENCH_ARGS ?=
 # fpm adds them to its debug profile and builds into a directory of their own.
 CHECKS := -fcheck=all -ffpe-trap=invalid,zero,overflow -ftrapv
 
-.PHONY: demo test test-checks bench setup build
+# The built program is run directly: `fpm run` would add its own progress lines.
+TENZOR = "$$(fpm run --runner echo tenzor 2>/dev/null | tail -n 1)"
+
+.PHONY: demo examples test test-checks bench setup build
 
 setup:
 	@bash scripts/setup.sh
@@ -26,20 +32,23 @@ setup:
 build: setup
 	@fpm build >/dev/null
 
-# The built program is run directly: `fpm run` would add its own progress lines.
 demo: build
-	@"$$(fpm run --runner echo tenzor 2>/dev/null | tail -n 1)" $(DECK) -o $(OUT)
+	@$(TENZOR) $(DECK) -o $(OUT)
+
+examples: build
+	@tenzor=$(TENZOR); find examples -name '*.crd' | LC_ALL=C sort | \
+	    while read -r deck; do "$$tenzor" "$$deck" -o $(OUT) || exit 1; done
 
 test: build
 	fpm test
-	python -m pytest harness
+	python -m pytest
 
 test-checks: setup
 	fpm test --profile debug --flag "$(CHECKS)"
 	TENZOR_EXE="$$(fpm run --profile debug --flag "$(CHECKS)" --runner echo tenzor 2>/dev/null | tail -n 1)" \
 	EM703_EXE="$$(fpm run --profile debug --flag "$(CHECKS)" --runner echo em703 2>/dev/null | tail -n 1)" \
-		python -m pytest harness -m "tenzor or em703"
+		python -m pytest -m "tenzor or em703"
 
-# harness.bench builds the release profile of TENZOR itself (fpm build --profile release).
+# bench builds the release profile of TENZOR itself (fpm build --profile release).
 bench: setup
-	python -m harness.bench $(BENCH_ARGS)
+	python -m bench $(BENCH_ARGS)

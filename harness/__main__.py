@@ -1,4 +1,7 @@
-"""Command line of the harness: ``python -m harness SUBCOMMAND ...``.
+"""Command line of the oracle: ``python -m harness decode|verify|f77check ...``.
+
+The neighbouring systems have their own (``python -m seeds``), and so have
+the benchmarks (``python -m bench``).
 
 Subcommands are listed in ``SUBCOMMANDS``: name -> function that adds the
 subparser to argparse and sets ``func`` (the runner, returning an exit
@@ -13,7 +16,7 @@ import sys
 from collections.abc import Callable, Sequence
 from pathlib import Path
 
-from . import dxf2deck, dxfboard, f77check, seed002, seed003, seed004, tape, verify
+from . import f77check, tape, verify
 
 
 def _write(text: str, stream=None) -> None:
@@ -96,21 +99,13 @@ SUBCOMMANDS: dict[str, Callable[[argparse._SubParsersAction], None]] = {
     "decode": _add_decode,
     "f77check": _add_f77check,
     "verify": _add_verify,
-    "split": seed004.add_split,
-    "dda": seed004.add_dda,
-    "profile": seed002.add_profile,
-    "equidistant": seed002.add_equidistant,
-    "punch5121": seed002.add_punch5121,
-    "cnclink": seed003.add_cnclink,
-    "dxf2deck": dxf2deck.add_dxf2deck,
-    "dxfboard": dxfboard.add_dxfboard,
 }
 
 
 def build_parser() -> argparse.ArgumentParser:
     """The argument parser with every subcommand of ``SUBCOMMANDS``."""
     parser = argparse.ArgumentParser(prog="python -m harness",
-                                     description="EM-703 / TENZOR test harness")
+                                     description="The EM-703 oracle: decode a tape, verify tapes against a deck, check the FORTRAN 77 of legacy/")
     sub = parser.add_subparsers(dest="command", metavar="COMMAND", required=True)
     for add in SUBCOMMANDS.values():
         add(sub)

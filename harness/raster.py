@@ -29,7 +29,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from .deck import AnyShape, Layer, run_shapes
+from .shapes import AnyShape, Layer, run_shapes
 from .sim import Run
 
 #: Default pitch and the pitches tried for big boards, in units (0.01 mm).
@@ -220,10 +220,16 @@ def _tiles(grid: Grid, shapes: Sequence[AnyShape], pad: float,
 
 
 def _top(values: np.ndarray, k: int) -> np.ndarray:
-    """Indices of the k largest values (all if fewer)."""
+    """Indices of the k largest values (all if fewer); among equal values the
+    first in the array.  Not ``argpartition``, whose choice among ties
+    depends on the CPU (numpy selects with SIMD where the CPU has it): the
+    k-th largest VALUE is the same everywhere, and ties are taken in order."""
     if values.size <= k:
         return np.arange(values.size)
-    return np.argpartition(-values, k)[:k]
+    kth = np.partition(values, values.size - k)[values.size - k]
+    above = np.flatnonzero(values > kth)
+    ties = np.flatnonzero(values == kth)[:k - above.size]
+    return np.concatenate([above, ties])
 
 
 def _spread(cands: list[tuple[float, ...]], k: int,

@@ -42,6 +42,7 @@ point.  The output is deterministic.  Exit status of the command: 0 PASS,
 from __future__ import annotations
 
 import math
+import sys
 from collections.abc import Sequence
 from dataclasses import dataclass, field
 from fractions import Fraction
@@ -50,10 +51,27 @@ from pathlib import Path
 import numpy as np
 
 from . import raster, sim
-from .deck import (LAYERS, AnyShape, ArcBand, CardError, Disc, Layer, Origin,
-                   Package, RoundRect, Stroke, parse_deck, run_shapes)
-from .tape import (DIGITS_8, DIGITS_K, Frame, Tape, TapeError, decode, frame_rows,
-                   frame_text)
+from .deck import LAYERS, CardError, Package, parse_deck
+from .shapes import (
+    AnyShape,
+    ArcBand,
+    Disc,
+    Layer,
+    Origin,
+    RoundRect,
+    Stroke,
+    run_shapes,
+)
+from .tape import (
+    DIGITS_8,
+    DIGITS_K,
+    Frame,
+    Tape,
+    TapeError,
+    decode,
+    frame_rows,
+    frame_text,
+)
 
 #: The machine's accuracy, in units (0.01 mm): the coverage tolerance.
 TOLERANCE = 5
@@ -738,7 +756,6 @@ def verify(deck_text: str, tapedir: str | Path, tol: int = TOLERANCE,
 
 def main(deck: str, tapedir: str, tol_mm: str = "0.05", code: str = "auto") -> int:
     """The command: print the verdict; 0 PASS, 1 FAIL, 2 usage or I/O."""
-    import sys
     try:
         tol = Fraction(tol_mm) * 100
     except (ValueError, ZeroDivisionError):

@@ -2,7 +2,9 @@
 # Set up everything the project needs, once; fast when all is already there.
 #   - gfortran (Debian package) compiles the FORTRAN 77 and the modern Fortran;
 #   - gerbv (Debian package) renders em703's Gerber output for a cross-check;
-#   - .venv/ holds fpm and the Python packages of requirements.txt.
+#   - .venv/ holds fpm and the Python packages of requirements.txt (exact pins),
+#     and the project of pyproject.toml installed editable: `python -m harness`,
+#     `python -m seeds`, `python -m bench` and `dxf2deck` then work anywhere.
 # LinuxCNC's rs274 interpreter (Debian package linuxcnc-uspace) is optional and
 # large: the G-code cross-check runs when it is installed (see README.md).
 # Called by `make demo` and `make test`; safe to run again at any time.
@@ -23,11 +25,15 @@ if [ ${#apt_packages[@]} -gt 0 ]; then
         "${apt_packages[@]}" >/dev/null
 fi
 
-want=$(sha256sum requirements.txt | cut -d' ' -f1)
+# Done again whenever either file changes (the stamp holds their checksum).
+want=$(cat requirements.txt pyproject.toml | sha256sum | cut -d' ' -f1)
 stamp=.venv/.requirements.sha256
 if [ ! -x .venv/bin/python ] || [ "$(cat "$stamp" 2>/dev/null)" != "$want" ]; then
     echo "setup: installing Python packages into .venv"
     python3 -m venv .venv
     .venv/bin/python -m pip install --quiet --disable-pip-version-check -r requirements.txt
+    # the project itself, with the setuptools just pinned: nothing to download
+    .venv/bin/python -m pip install --quiet --disable-pip-version-check \
+        --no-deps --no-build-isolation --editable .
     echo "$want" > "$stamp"
 fi

@@ -5,7 +5,7 @@
 !> whole pulses, a half towards the start: the rule that gives the document's
 !> table (98132, 87647 pulses in 10 frames of at most 9999) exactly. The same
 !> rule is in the 1977 program (legacy/cmspl1.f) for the P card's FMAX, and in
-!> the harness (harness/seed004.py) as the oracle.
+!> the harness (seeds/seed004.py) as the oracle.
 module em703_split
     use, intrinsic :: iso_fortran_env, only: int64
     implicit none

@@ -1,0 +1,150 @@
+"""``python -m bench [--quick] [--out DIR] ...``: run the benchmarks.
+
+Builds TENZOR with ``fpm build --profile release`` (unless ``--tenzor``
+names a binary), runs every board, prints the table and the targets, and
+writes ``bench.csv``, ``bench.txt`` (the table and the targets),
+``bench.md`` (the table in Markdown) and ``bench.svg`` into ``--out``
+(default ``out/bench``; the decks and tapes go to ``--out``/scratch).
+``--report CSV`` re-renders an earlier run without running anything.
+Exit status 0, or 2 for a usage or build problem.
+"""
+
+from __future__ import annotations
+
+import argparse
+import platform
+import shutil
+import subprocess
+import sys
+import time
+from collections.abc import Sequence
+from pathlib import Path
+
+from . import boards, report, run_board, tours
+
+ROOT = Path(__file__).resolve().parents[1]
+
+
+def release_binary() -> Path:
+    """Build TENZOR optimised and return the path of the executable."""
+    fpm = shutil.which("fpm")
+    if fpm is None:
+        raise SystemExit("fpm is not on PATH: run `make bench`, or put .venv/bin on PATH")
+    subprocess.run([fpm, "build", "--profile", "release"], cwd=ROOT, check=True,
+                   capture_output=True)
+    out = subprocess.run([fpm, "run", "--profile", "release", "--runner", "echo", "tenzor"],
+                         cwd=ROOT, check=True, capture_output=True, text=True).stdout.split()
+    return ROOT / out[-1]
+
+
+def _sizes(text: str) -> list[int]:
+    try:
+        sizes = [int(s.replace("_", "")) for s in text.split(",") if s.strip()]
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"not a list of sizes: {text!r}") from None
+    if not sizes or min(sizes) < 10:
+        raise argparse.ArgumentTypeError("sizes are pad counts of at least 10")
+    return sizes
+
+
+def _dists(text: str) -> list[str]:
+    dists = [d.strip() for d in text.split(",") if d.strip()]
+    bad = [d for d in dists if d not in boards.DISTRIBUTIONS]
+    if bad or not dists:
+        raise argparse.ArgumentTypeError(f"distributions are {', '.join(boards.DISTRIBUTIONS)}")
+    return dists
+
+
+def build_parser() -> argparse.ArgumentParser:
+    p = argparse.ArgumentParser(prog="python -m bench", description=__doc__.split("\n\n")[1],
+                                formatter_class=argparse.RawDescriptionHelpFormatter)
+    p.add_argument("--quick", action="store_true",
+                   help="boards of 100 and 1 000 pads only, 2 timed runs each")
+    p.add_argument("--out", type=Path, default=ROOT / "out" / "bench", metavar="DIR",
+                   help="output directory (default out/bench)")
+    p.add_argument("--sizes", type=_sizes, metavar="N,N,...",
+                   help="board sizes in pads (default 100,1000,10000,100000)")
+    p.add_argument("--dists", type=_dists, default=list(boards.DISTRIBUTIONS), metavar="D,D,...",
+                   help="distributions (default uniform,clustered,grid)")
+    p.add_argument("--repeats", type=int, metavar="N",
+                   help="timed runs of TENZOR per board, the minimum is kept (default 5)")
+    p.add_argument("--min-seconds", type=float, default=1.0, metavar="S",
+                   help="repeat short runs until they add up to S seconds, at most 30 runs "
+                        "(default 1)")
+    p.add_argument("--lkh-max", type=int, default=10000, metavar="N",
+                   help="largest board given to LKH-3 (default 10000)")
+    p.add_argument("--nn-max", type=int, default=100000, metavar="N",
+                   help="largest board given to the Python nearest neighbour (default 100000)")
+    p.add_argument("--tenzor", type=Path, metavar="EXE",
+                   help="the TENZOR binary to time (default: build the release profile)")
+    p.add_argument("--report", type=Path, metavar="CSV",
+                   help="run nothing: print the table and targets of an earlier bench.csv "
+                        "and write its bench.txt, bench.md and bench.svg into --out")
+    return p
+
+
+def write_outputs(rows: Sequence[dict], out: Path) -> str:
+    """bench.txt, bench.md and bench.svg of the rows (bench.csv is the
+    caller's); returns the text of bench.txt."""
+    text = report.table(rows) + "\n" + report.targets_text(rows)
+    (out / "bench.txt").write_text(text, encoding="ascii")
+    (out / "bench.md").write_text(report.table(rows, markdown=True), encoding="ascii")
+    (out / "bench.svg").write_text(report.svg(rows), encoding="ascii")
+    return text
+
+
+def main(argv: Sequence[str] | None = None) -> int:
+    args = build_parser().parse_args(argv)
+    if args.report:
+        try:
+            rows = report.read_csv(args.report)
+        except OSError as exc:
+            print(f"{args.report}: {exc.strerror or exc}", file=sys.stderr)
+            return 2
+        args.out.mkdir(parents=True, exist_ok=True)
+        print(write_outputs(rows, args.out), end="")
+        return 0
+    sizes = args.sizes or ([100, 1000] if args.quick else list(boards.SIZES))
+    repeats = args.repeats or (2 if args.quick else 5)
+    if repeats < 1:
+        print("--repeats must be at least 1", file=sys.stderr)
+        return 2
+    try:
+        exe = args.tenzor.resolve() if args.tenzor else release_binary()
+    except subprocess.CalledProcessError as exc:
+        print(f"building TENZOR failed: {exc.stderr.decode(errors='replace')}", file=sys.stderr)
+        return 2
+    if not exe.exists():
+        print(f"no TENZOR binary at {exe}", file=sys.stderr)
+        return 2
+    out = args.out
+    scratch = out / "scratch"
+    scratch.mkdir(parents=True, exist_ok=True)
+    if not tours.lkh_available():
+        print("elkai (LKH-3) is not installed: no reference tours", file=sys.stderr)
+    print(f"TENZOR {exe}; {platform.processor() or platform.machine()}, "
+          f"{len(sizes) * len(args.dists)} boards, {repeats} timed runs each (minimum kept)",
+          flush=True)
+    rows = []
+    started = time.perf_counter()
+    for size in sizes:
+        for dist in args.dists:
+            t = time.perf_counter()
+            board = boards.make_board(dist, size)
+            row = run_board(board, exe, scratch, repeats, args.lkh_max, args.nn_max,
+                            args.min_seconds)
+            rows.append(row)
+            print(f"  {row['board']}: TENZOR {row['tenzor_s']:.3f} s, "
+                  f"{row['peak_rss_mb']:.1f} MB; board done in {time.perf_counter() - t:.0f} s",
+                  flush=True)
+    report.write_csv(rows, out / "bench.csv")
+    text = write_outputs(rows, out)
+    print()
+    print(text, end="")
+    print(f"\n{len(rows)} boards in {time.perf_counter() - started:.0f} s; "
+          f"wrote {out / 'bench.csv'}, bench.txt, bench.md, bench.svg")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,128 @@
+"""The benchmark (issue 7) runs and writes sane figures.
+
+Only the 100-pad boards, one timed run each, with the test build of TENZOR:
+the figures themselves belong in the benchmark's output and in
+docs/PERFORMANCE.md, so nothing here asserts a time.
+"""
+from __future__ import annotations
+
+import math
+import xml.etree.ElementTree as ET
+from pathlib import Path
+
+import pytest
+
+from bench import __main__ as bench_main
+from bench import boards, measure, report, tours
+
+ROOT = Path(__file__).resolve().parents[2]
+
+
+@pytest.fixture(scope="module")
+def quick_run(tenzor_exe, tmp_path_factory):
+    out = tmp_path_factory.mktemp("bench")
+    status = bench_main.main(["--quick", "--sizes", "100", "--repeats", "1", "--min-seconds", "0",
+                              "--tenzor", str(tenzor_exe), "--out", str(out)])
+    assert status == 0
+    return out
+
+
+def test_csv_has_the_columns_and_one_row_per_board(quick_run):
+    text = (quick_run / "bench.csv").read_text(encoding="ascii")
+    assert text.splitlines()[0].split(",") == list(report.COLUMNS)
+    rows = report.read_csv(quick_run / "bench.csv")
+    assert [r["dist"] for r in rows] == list(boards.DISTRIBUTIONS)
+    assert all(r["pads"] == "100" for r in rows)
+
+
+def test_figures_are_sane(quick_run):
+    for r in report.read_csv(quick_run / "bench.csv"):
+        v = {k: float(x) for k, x in r.items() if k not in ("board", "dist") and x != ""}
+        where = r["board"]
+        assert 0 < v["tenzor_s"] <= v["tenzor_s_max"], where
+        assert 0 < v["tenzor_cpu_s"], where
+        assert 0.5 < v["peak_rss_mb"] < 1000, where
+        assert 0 < v["frames"] < v["rows"], where
+        assert math.isclose(v["frames_per_s"], v["frames"] / v["tenzor_s"], rel_tol=1e-3), where
+        assert v["drawn_m"] > 0 and v["travel_m"] > 0 and v["run_min"] > 0, where
+        for key in ("cyc_small", "cyc_large", "cyc_cond", "cyc_pads", "cyc_all"):
+            assert 0 < v[key] <= 1, (where, key)
+        # every tour visits the same items: the reference is the shortest,
+        # TENZOR beats the deck order, and no tour is shorter than the reference
+        for key in ("tour_deck_m", "tour_nn_m", "tour_tenzor_m"):
+            assert v[key] >= v["tour_ref_m"] * 0.999, (where, key)
+        assert v["tour_tenzor_m"] < v["tour_deck_m"], where
+        assert math.isclose(v["tenzor_vs_ref"], v["tour_tenzor_m"] / v["tour_ref_m"],
+                            rel_tol=1e-3), where
+        assert v["ref_s"] > 0 and v["items"] >= 1, where
+    grid = [r for r in report.read_csv(quick_run / "bench.csv") if r["dist"] == "grid"][0]
+    assert float(grid["cyc_small"]) < 0.8          # the rows of a grid board fold into cycles
+
+
+def test_table_plot_and_targets_are_written(quick_run):
+    text = (quick_run / "bench.txt").read_text(encoding="ascii")
+    assert "TENZOR s" in text and "GRID100" in text
+    assert "100 000 pads deck to tapes" in text
+    root = ET.fromstring((quick_run / "bench.svg").read_text(encoding="ascii"))
+    assert root.tag.endswith("svg")
+    assert (quick_run / "bench.md").read_text(encoding="ascii").startswith("| board |")
+
+
+def test_nearest_neighbour_and_lkh_on_a_square():
+    # four corners of a 1 m square and the start point at one corner's side
+    items = [tours.Item(p, p) for p in ((100000, 0), (100000, 100000), (0, 100000), (50000, 0))]
+    nn = tours.nearest_neighbour(items)
+    assert [i for i, _ in nn] == [3, 0, 1, 2]
+    assert tours.tour_length(items, nn) == pytest.approx(400000)
+    ref, seconds = tours.lkh_tour(items)
+    tours.check_order(len(items), ref)
+    assert tours.tour_length(items, ref) == pytest.approx(400000)
+    assert tours.tour_length(items, [(i, False) for i in (0, 3, 1, 2)]) > 400000
+
+
+def test_nearest_neighbour_takes_a_segment_by_its_nearer_end():
+    items = [tours.Item((1000, 0), (9000, 0)), tours.Item((10000, 500), (10000, 500))]
+    order = tours.nearest_neighbour(items, start=(9500, 0))
+    assert order == [(0, True), (1, False)]      # enters at (9000, 0), leaves at (1000, 0)
+
+
+def test_boards_are_deterministic_and_fit_the_field():
+    a, b = boards.make_board("clustered", 100), boards.make_board("clustered", 100)
+    assert a.deck() == b.deck()
+    for dist in boards.DISTRIBUTIONS:
+        board = boards.make_board(dist, 100)
+        assert board.pad_count == 100
+        assert (boards.X0_MM * 100 + board.side) <= 120000
+        for p in board.pads:
+            for x, y in p.centres():
+                assert 0 < x < board.side and 0 < y < board.side
+
+
+def test_performance_md_shows_the_recorded_run():
+    """docs/PERFORMANCE.md's table is the one of bench/results/bench.csv."""
+    rows = report.read_csv(ROOT / "bench" / "results" / "bench.csv")
+    doc = (ROOT / "docs" / "PERFORMANCE.md").read_text(encoding="utf-8")
+    assert report.table(rows, markdown=True) in doc
+
+
+@pytest.mark.skipif(not tours.lkh_available(), reason="elkai (LKH-3) is not installed")
+@pytest.mark.parametrize("dist", ["uniform", "grid"])
+def test_tenzor_tour_is_within_five_percent_of_lkh(dist, run_tenzor):
+    """Issue 7's travel target on a 1 000-pad board: the tour TENZOR punches
+    (read back from its simulated tapes) is at most 5 % longer than LKH-3's
+    through the same items, and shorter than plain nearest neighbour's."""
+    board = boards.make_board(dist, 1000)
+    proc, out = run_tenzor(board.deck())
+    assert proc.returncode == 0, proc.stderr
+    stats = {t: measure.read_tape(out / f"{board.name}-{t}.ptp") for t in ("small", "large")}
+    length = {"tenzor": 0.0, "nn": 0.0, "ref": 0.0}
+    for key, st in stats.items():
+        pads = [p for p in board.pads if p.tape == key]
+        items, order = tours.recover_order(st.run, pads)
+        tours.check_order(len(items), order)
+        length["tenzor"] += tours.tour_length(items, order)
+        length["nn"] += tours.tour_length(items, tours.nearest_neighbour(items))
+        ref, _ = tours.lkh_tour(items)
+        length["ref"] += tours.tour_length(items, ref)
+    assert length["tenzor"] <= 1.05 * length["ref"], length
+    assert length["tenzor"] < length["nn"], length

@@ -1,0 +1,65 @@
+"""The documentation stays true: every example card of docs/CARDS.md is a card
+TENZOR accepts, column for column, and README's table of files is what TENZOR
+writes."""
+from __future__ import annotations
+
+import re
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parents[3]
+
+
+def _example_cards() -> list[str]:
+    text = (ROOT / "docs" / "CARDS.md").read_text()
+    cards = []
+    for block in re.findall(r"```\n----\+----1.*?\n(.*?)```", text, re.S):
+        if "..." in block:  # the outline of a package, not cards
+            continue
+        cards += [line for line in block.splitlines() if line[:1] in "PDL+OAM"]
+    return cards
+
+
+def test_cards_md_examples_are_accepted(run_tenzor):
+    cards = _example_cards()
+    kinds = {c[0] for c in cards}
+    assert kinds == set("PDL+OAM"), kinds
+    p = [c for c in cards if c[0] == "P"]
+    rest = [c for c in cards if c[0] != "P"]
+    # the example P card asks for a 1:1 board at (100, 100) mm: everything fits
+    deck = "DOCS\n" + "\n".join(p + rest) + "\nE\n"
+    proc, out = run_tenzor(deck)
+    assert proc.returncode == 0, proc.stderr.decode()
+    assert (out / "DOCS-cond.ptp").exists()
+
+
+def test_readme_names_the_files_tenzor_writes(run_tenzor):
+    readme = (ROOT / "README.md").read_text()
+    proc, out = run_tenzor(ROOT / "examples" / "report" / "example4.crd")
+    assert proc.returncode == 0
+    for path in out.iterdir():
+        suffix = re.sub(r"^EXAMPLE4", "NAME", path.name)
+        pattern = suffix.replace("-small.txt", "-*.txt").replace("-large.txt", "-*.txt") \
+                        .replace("-cond.txt", "-*.txt")
+        assert f"`{pattern}`" in readme, pattern
+
+
+def test_filling_md_row_excerpt_is_the_demo_tape(run_tenzor):
+    """docs/FILLING.md quotes the first frames of the demo's small-pad tape."""
+    text = (ROOT / "docs" / "FILLING.md").read_text()
+    block = text.split("## Rows of pads", 1)[1].split("```", 2)[1]
+    quoted = [line[:25].rstrip() for line in block.strip().splitlines()]
+    proc, out = run_tenzor(ROOT / "examples" / "demo.crd")
+    assert proc.returncode == 0
+    frames = (out / "LOGIC-CARD-A-small.txt").read_text().splitlines()
+    assert frames[1:1 + len(quoted)] == quoted
+
+
+def test_filling_pictures_are_current(tmp_path):
+    """docs/img/filling*.svg are what scripts/pictures.sh draws now."""
+    import subprocess
+    subprocess.run(["bash", str(ROOT / "scripts" / "pictures.sh"), str(tmp_path)],
+                   check=True, capture_output=True, cwd=ROOT)
+    for fresh in sorted(tmp_path.glob("filling*.svg")):
+        kept = ROOT / "docs" / "img" / fresh.name
+        assert kept.exists(), f"{kept} is missing: run scripts/pictures.sh"
+        assert kept.read_bytes() == fresh.read_bytes(), f"{kept} is stale: run scripts/pictures.sh"

@@ -1,0 +1,87 @@
+"""Every citation resolves inside the repository: no file of the project points
+at a document a clone does not carry (a numbered section of an outside
+contract, a path beside the repository, a numbered issue of a tracker), and
+every relative link of a Markdown page names a file that exists.
+
+The source documents are cited by the names docs/SOURCES.md gives them ("the
+report", "seed 002"), and what they say is in the project's own pages. CI's
+script (.ci/) is the one file allowed to know what lies beside the clone.
+"""
+from __future__ import annotations
+
+import re
+import subprocess
+from pathlib import Path
+
+import pytest
+
+ROOT = Path(__file__).resolve().parents[3]
+
+# Written in pieces so that this file does not match itself.
+OUTSIDE = re.compile(
+    r"\bSPEC(?: section)? ?[0-9]"       # a section of the outside contract
+    r"|\.\./shared|\bshared/seed[s]"    # the folder beside the clone
+    r"|\b[Ii]ssues? (?:#)?[0-9]"        # a tracker's issue (a journal's is "No. N")
+)
+LINK = re.compile(r"\]\(([^)\s]+)\)")
+
+
+SKIP = {".git", ".venv", "build", "out", "__pycache__", ".pytest_cache", ".hypothesis"}
+
+
+def _tracked() -> list[Path]:
+    """The files of the repository as a clone has them (git's list; outside a
+    git checkout, the tree without what builds and runs leave behind)."""
+    proc = subprocess.run(["git", "ls-files", "-z"], cwd=ROOT, capture_output=True)
+    if proc.returncode == 0:
+        return [ROOT / name for name in proc.stdout.decode().split("\0") if name]
+    return sorted(p for p in ROOT.rglob("*") if p.is_file()
+                  and not SKIP.intersection(p.relative_to(ROOT).parts))
+
+
+def _text(path: Path) -> str | None:
+    try:
+        return path.read_text(encoding="utf-8")
+    except (UnicodeDecodeError, FileNotFoundError, IsADirectoryError):
+        return None  # pictures, tape images
+
+
+def test_no_file_cites_what_a_clone_does_not_carry():
+    found = []
+    for path in _tracked():
+        rel = path.relative_to(ROOT)
+        if rel.parts[0] == ".ci":
+            continue
+        text = _text(path)
+        if text is None:
+            continue
+        for n, line in enumerate(text.splitlines(), 1):
+            m = OUTSIDE.search(line)
+            if m:
+                found.append(f"{rel}:{n}: {m.group(0)!r} in {line.strip()[:80]!r}")
+    assert not found, "citations outside the repository:\n" + "\n".join(found)
+
+
+@pytest.mark.parametrize("page", sorted(
+    str(p.relative_to(ROOT)) for p in _tracked() if p.suffix == ".md"))
+def test_relative_links_of_a_page_resolve(page):
+    path = ROOT / page
+    broken = []
+    for target in LINK.findall(path.read_text(encoding="utf-8")):
+        if re.match(r"[a-z]+:", target) or target.startswith("#"):
+            continue  # a web address, a mail address, an anchor on the page
+        name = target.split("#", 1)[0]
+        if not (path.parent / name).exists():
+            broken.append(target)
+    assert not broken, f"{page}: links to nothing: {broken}"
+
+
+def test_the_checker_catches_each_kind_of_outside_citation():
+    """The pattern is not vacuous: each kind it forbids is caught, and the
+    project's own way of citing passes."""
+    for bad in ("see SPEC section 7", "SPEC 6: travel", "../shared/SPEC.md",
+                "shared/seeds/001_x.txt", "(issue 5)", "issues 2 and 3"):
+        assert OUTSIDE.search(bad), bad
+    for good in ("the report, Table I", "seed 002, Table 5", "Acta Optica, No. 3",
+                 "docs/RECONSTRUCTION.md", "specification"):
+        assert not OUTSIDE.search(good), good

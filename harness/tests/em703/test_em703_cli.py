@@ -1,0 +1,152 @@
+"""The em703 command line: every subcommand has --help; a usage or I/O error
+is one line on standard error with exit status 2, a bad input one line
+naming the file and the row (or line) with exit status 1, and never a
+Fortran runtime error; outputs are the same bytes from run to run."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+
+from harness.tape import Frame, encode
+
+from harness.tests.helpers import run
+
+SUBCOMMANDS = ["list", "sim", "svg", "gcode", "gerber", "punch", "view"]
+
+
+def one_line(proc) -> str:
+    err = proc.stderr.decode("utf-8")
+    assert err.count("\n") == 1 and err.endswith("\n"), err
+    assert "Fortran runtime" not in err and "Error termination" not in err, err
+    return err[:-1]
+
+
+def test_help(em703_exe) -> None:
+    for args in (["--help"], ["-h"], ["help"]):
+        text = run(em703_exe, *args, check=0).stdout.decode()
+        assert text.startswith("usage: em703 SUBCOMMAND")
+        for sub in SUBCOMMANDS:
+            assert f"  {sub} " in text
+    for sub in SUBCOMMANDS:
+        for flag in ("--help", "-h"):
+            proc = run(em703_exe, sub, flag, check=0)
+            text = proc.stdout.decode("utf-8")
+            assert text.startswith(f"usage: em703 {sub} "), text
+            assert "Exit status" in text and proc.stderr == b""
+            assert max(len(line) for line in text.splitlines()) <= 80
+
+
+@pytest.mark.parametrize("args, words", [
+    ([], "no subcommand"),
+    (["frobnicate"], 'unknown subcommand "frobnicate"'),
+    (["list"], "missing TAPE"),
+    (["list", "a.ptp", "b.ptp"], "one file at a time"),
+    (["list", "--code", "9", "a.ptp"], "--code takes 8, K or auto"),
+    (["list", "--utf9", "a.ptp"], "unknown option --utf9"),
+    (["sim", "a.ptp", "--scale", "10:1"], "--scale takes one of the machine's scales"),
+    (["sim", "a.ptp", "--scale", "x"], "--scale takes"),
+    (["sim", "a.ptp", "--start", "1300,0"], "--start takes X,Y in mm on the field"),
+    (["sim", "a.ptp", "--start", "5"], "--start takes"),
+    (["sim", "a.ptp", "--tool", "0"], "--tool takes"),
+    (["sim", "a.ptp", "--svg"], "option --svg needs a value"),
+    (["svg"], "missing JOB"),
+    (["gcode", "a.ptp", "--chords", "0"], "--chords takes the tolerance in mm"),
+    (["gcode", "a.ptp", "--chords", "1e-3"], "--chords takes"),
+    (["gerber"], "missing JOB"),
+    (["punch", "a.txt"], "missing --code iso|eia"),
+    (["punch", "--code", "ascii", "a.txt"], "--code takes iso or eia"),
+    (["view", "a.ptp", "--rows", "5:2"], "--rows takes FIRST:LAST"),
+    (["view", "a.ptp", "--code", "baudot"], "--code takes auto, em703, iso or eia"),
+])
+def test_usage_errors_are_one_line_with_status_2(em703_exe, args, words) -> None:
+    proc = run(em703_exe, *args, check=2)
+    line = one_line(proc)
+    assert line.startswith("em703") and words in line, line
+    assert proc.stdout == b""
+
+
+@pytest.mark.parametrize("sub", ["list", "sim", "svg", "gcode", "gerber", "view"])
+def test_missing_and_unreadable_files_are_status_2(em703_exe, tmp_path, sub) -> None:
+    missing = tmp_path / "nothing.job"
+    line = one_line(run(em703_exe, sub, missing, check=2))
+    assert line == f"{missing}: cannot open: no such file"
+    line = one_line(run(em703_exe, sub, tmp_path, check=2))
+    assert line.startswith(f"{tmp_path}: cannot ")
+
+
+def test_unwritable_output_is_status_2(em703_exe, example_jobs, tmp_path) -> None:
+    job = example_jobs[0]
+    target = tmp_path / "no" / "such" / "dir" / "x.out"
+    for sub in ("svg", "gcode", "gerber"):
+        line = one_line(run(em703_exe, sub, job, "-o", target, check=2))
+        assert line.startswith(f"{target}: cannot write")
+    src = tmp_path / "p.ngc"
+    src.write_text("G00 X1\n")
+    one_line(run(em703_exe, "punch", "--code", "iso", "-o", target, src, check=2))
+    assert not target.exists()
+
+
+def test_a_bad_tape_is_status_1_naming_the_row(em703_exe, tmp_path) -> None:
+    data = bytearray(encode([Frame(dx=500, k=10), Frame(dx=-500, k=20)]))
+    data[25] = 0o33                          # a row outside the code
+    bad = tmp_path / "bad.ptp"
+    bad.write_bytes(bytes(data))
+    for sub in ("list", "sim", "gcode"):
+        line = one_line(run(em703_exe, sub, bad, check=1))
+        assert line == f"{bad}: row 26: code 33 is not an EM-703 code"
+
+
+def test_a_bad_job_sheet_is_status_1_naming_the_line(em703_exe, example_jobs, tmp_path) -> None:
+    job = example_jobs[0]
+    for name in ("small", "large", "cond"):
+        for tape in job.parent.glob(f"*-{name}.ptp"):
+            (tmp_path / tape.name).write_bytes(tape.read_bytes())
+    lines = job.read_text().splitlines()
+    bad = tmp_path / "bad.job"
+    bad.write_text("\n".join(lines[:3] + ["scale: 1:1"] + lines[3:]) + "\n")
+    for sub in ("svg", "gcode", "gerber"):
+        line = one_line(run(em703_exe, sub, bad, check=1))
+        assert line == f'{bad}: line 4: not a "key = value" line: "scale: 1:1"'
+    no_tool = tmp_path / "no_tool.job"
+    no_tool.write_text("\n".join(l for l in lines if not l.startswith("cond.tool_mm")) + "\n")
+    line = one_line(run(em703_exe, "gerber", no_tool, check=1))
+    assert line == f'{no_tool}: the job sheet has no "cond.tool_mm = ..." line'
+    gone = tmp_path / "gone.job"
+    gone.write_text(job.read_text())
+    (tmp_path / keys_of(job)["large.tape"]).unlink()
+    line = one_line(run(em703_exe, "svg", gone, check=2))
+    assert line.endswith(": cannot open: no such file")
+
+
+def keys_of(job: Path) -> dict[str, str]:
+    return dict(line.split(" = ", 1) for line in job.read_text().splitlines()
+                if " = " in line and not line.startswith("#"))
+
+
+def test_a_tape_that_does_not_end_at_its_start_warns_and_shifts_the_next(em703_exe,
+                                                                          tmp_path) -> None:
+    from harness.tests.helpers import write_job
+    job = write_job(tmp_path, "OPEN", {"small": encode([Frame(dx=1000, k=10)]),
+                                       "cond": encode([Frame(dy=500, k=10)])}, {})
+    proc = run(em703_exe, "gcode", job, check=1)
+    assert one_line(proc) == (f"{tmp_path}/OPEN-small.ptp: the tape ends at (10.00, 0.00) mm "
+                              "from its start point, not at it: the next tape starts there")
+    assert "G01 X10.000 Y5.000" in proc.stdout.decode()
+
+
+def test_outputs_are_the_same_bytes_every_run(em703_exe, example_tapes, example_jobs,
+                                              tmp_path) -> None:
+    for job in example_jobs[:3]:
+        for sub, extra in (("svg", []), ("gcode", []), ("gcode", ["--chords", "0.01"]),
+                           ("gcode", ["--z"]), ("gerber", [])):
+            a, b = tmp_path / "a", tmp_path / "b"
+            run(em703_exe, sub, job, *extra, "-o", a, check=0)
+            run(em703_exe, sub, job, *extra, "-o", b, check=0)
+            assert a.read_bytes() == b.read_bytes() and a.stat().st_size > 0
+            stdout = run(em703_exe, sub, job, *extra, check=0).stdout
+            assert stdout == a.read_bytes()
+    for tape in example_tapes[:6]:
+        for sub in ("list", "sim", "view"):
+            assert run(em703_exe, sub, tape).stdout == run(em703_exe, sub, tape).stdout

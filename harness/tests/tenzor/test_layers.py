@@ -1,0 +1,140 @@
+"""Integration: TENZOR's tapes draw exactly the deck's ideal layers.
+
+For every deck under examples/ and for random boards (harness.cards), run
+the real TENZOR, decode each of the three tapes of each package with
+harness.tape, simulate them with harness.sim and check:
+
+* the drawing with the tape's tool equals the ideal layer of harness.deck
+  within 0.05 mm (no holes, no excess; harness.raster);
+* the tape ends with the tool raised at its start point (0, 0);
+* the machine position X0 + v*N/D stays inside 0..1200 mm on both axes;
+* the job sheet agrees with the P card (tools, start point, scale, code).
+"""
+
+from __future__ import annotations
+
+from decimal import Decimal
+from pathlib import Path
+
+import pytest
+from hypothesis import HealthCheck, given, settings
+from hypothesis import strategies as st
+
+from harness import cards
+from harness.tests.strategies import REACH, st_package
+from harness.deck import LAYERS, CardError, Package, parse_deck
+from harness.sim import simulate
+
+from harness.tests.helpers import DECKS as EXAMPLES
+from harness.tests.helpers import ROOT, check_outputs
+
+
+@pytest.mark.parametrize("deck_path", EXAMPLES, ids=[str(p.relative_to(ROOT)) for p in EXAMPLES])
+def test_example_deck_draws_its_ideal_layers(run_tenzor, deck_path: Path) -> None:
+    proc, out = run_tenzor(deck_path)
+    if proc.returncode != 0:
+        listing = "".join(p.read_text(encoding="latin-1") for p in sorted(out.glob("*.lst"))) \
+            if out.exists() else ""
+        errors = [ln.strip() for ln in (listing + proc.stdout.decode("latin-1")
+                                        + proc.stderr.decode("latin-1")).splitlines()
+                  if "ERROR" in ln.upper()]
+        pytest.skip(f"TENZOR reports errors for {deck_path.name} (exit {proc.returncode}): "
+                    + ("; ".join(errors[:3]) or "see its listing"))
+    problems = check_outputs(proc, out, deck_path)
+    assert not problems, "\n".join(problems)
+
+
+# ---------------------------------------------------------------------------
+# Random boards.
+# ---------------------------------------------------------------------------
+@st.composite
+def st_deck(draw: st.DrawFn) -> str:
+    """A deck of 1-2 random packages with distinct names."""
+    pkgs = draw(st.lists(st_package(), min_size=1, max_size=2))
+    seen: set[str] = set()
+    for n, p in enumerate(pkgs):
+        while p.name in seen:
+            p.name = f"{p.name[:6]}Z{n}"
+            n += 1
+        seen.add(p.name)
+    return cards.deck(pkgs, envelope=draw(st.booleans()))
+
+
+@settings(max_examples=25, deadline=None,
+          suppress_health_check=[HealthCheck.function_scoped_fixture, HealthCheck.too_slow])
+@given(text=st_deck())
+def test_random_board_draws_its_ideal_layers(run_tenzor, tmp_path: Path, text: str) -> None:
+    decks = tmp_path / "decks"
+    decks.mkdir(exist_ok=True)
+    deck_path = decks / f"deck{len(list(decks.iterdir()))}.crd"
+    deck_path.write_text(text, encoding="ascii")
+    proc, out = run_tenzor(deck_path)
+    problems = check_outputs(proc, out, deck_path)
+    assert not problems, f"failing deck written to {deck_path}\n" + "\n".join(problems)
+
+
+# ---------------------------------------------------------------------------
+# The oracle's own deck reading (no TENZOR needed).
+# ---------------------------------------------------------------------------
+@given(pkg=st_package(name="ROUNDTRIP"))
+def test_generated_cards_parse_back(pkg: cards.CardPackage) -> None:
+    (parsed,) = parse_deck(cards.deck([pkg]))
+    assert parsed.name == "ROUNDTRIP"
+    kinds = [c[:1] for c in pkg.cards if c]
+    assert len(parsed.conductors) == kinds.count("L")
+    assert len(parsed.circles) == kinds.count("O")
+    assert len(parsed.arcs) == kinds.count("A")
+    assert sum(len(v) for v in parsed.m_frames.values()) == kinds.count("M")
+    pad_shapes = sum(len(parsed.layers[k]) - _m_shapes(parsed, k) for k in ("small", "large"))
+    assert pad_shapes == sum(p.n for p in parsed.pads)
+    for key in LAYERS:
+        for shape in parsed.layers[key]:
+            b = shape.bbox()
+            assert -REACH - 100 <= b[0] <= b[1] <= REACH + 100
+            assert -REACH - 100 <= b[2] <= b[3] <= REACH + 100
+
+
+def _m_shapes(pkg: Package, key: str) -> int:
+    """Shapes that the M frames of a tape add to its layer."""
+    return len(simulate(pkg.m_frames[key]).strokes)
+
+
+def test_card_fields_are_fortran_fields() -> None:
+    card = cards.d_card(1250, -5, Decimal("1.6"), None, 4, 254, None)
+    assert card[10:20] == "     12.50" and card[20:30] == "     -0.05"
+    assert card[30:38] == "    1.60" and card[46:50] == "   4" and card[50:60] == "      2.54"
+    (pkg,) = parse_deck(cards.deck([cards.CardPackage("X", [
+        cards.p_card(50000, 60000, 30, 120, 40, 250, (1, 2), "K", "D"), card])]))
+    assert pkg.start == (50000, 60000) and pkg.tools == (30, 120, 40)
+    assert pkg.dmax == 250 and pkg.scale == (1, 2) and (pkg.code, pkg.order) == ("K", "D")
+    assert [p.centres() for p in pkg.pads] == [[(1250 + 254 * i, -5) for i in range(4)]]
+    assert len(pkg.layers["small"]) == 4 and not pkg.layers["large"]
+    # implied decimals, defaults, strictness
+    (pkg,) = parse_deck("B\nD         " + "      1250" + "        10" + "     160\nE\n")
+    assert pkg.pads[0].x == 1250 and pkg.pads[0].y == 10 and pkg.pads[0].w == 160
+    assert pkg.tools == (50, 100, 50) and pkg.dmax == 200 and pkg.code == "8"
+    for bad in ("B\nD         12                  1.00\nE\n", "B\nQ\nE\n", "B\nD  junk\nE\n", "B\nP\n",
+                "B\n+         1.00      2.00\nE\n"):
+        with pytest.raises(ValueError, match="card"):
+            parse_deck(bad)
+
+
+@pytest.mark.parametrize("arc, col, words", [
+    (("+", 1000, 1000, 1000, 1000, 1500, 1000), 31, "start of the arc is its centre"),
+    (("+", 1000, 1000, 1001, 1000, 1000, 1000), 51, "end of the arc is its centre"),
+    (("+", 1000, 1000, 1500, 1000, 1500, 1000), 51, "ends where it starts"),
+])
+def test_oracle_and_tenzor_reject_the_same_degenerate_arcs(run_tenzor, arc, col, words) -> None:
+    """An A card whose start or end is its centre, or whose end is its start,
+    is refused by TENZOR (card and column named) and by the harness's parser
+    alike: the oracle must not draw what TENZOR will not punch."""
+    card = cards.a_card(*arc)
+    deck = cards.deck([cards.CardPackage("ARCS", [card])])
+    no = deck.splitlines().index(card) + 1
+    with pytest.raises(CardError) as err:
+        parse_deck(deck)
+    assert err.value.card == no and words in str(err.value)
+    proc, _ = run_tenzor(deck)
+    assert proc.returncode == 1
+    text = proc.stderr.decode()
+    assert f"CARD {no} COL {col}:" in text and words.upper() in text, text

@@ -1,0 +1,151 @@
+"""The tenzor command as a user runs it: options, standard input, output
+directory, listing and job sheet, and byte-identical output run after run."""
+from __future__ import annotations
+
+import subprocess
+from pathlib import Path
+
+import pytest
+
+from harness import tape
+from harness.tests.helpers import read_job
+
+ROOT = Path(__file__).resolve().parents[3]
+EXAMPLE5 = ROOT / "examples" / "report" / "example5.crd"
+
+
+def _files(out: Path) -> dict[str, bytes]:
+    return {p.name: p.read_bytes() for p in sorted(out.iterdir())}
+
+
+def test_help(tenzor_exe):
+    proc = subprocess.run([tenzor_exe, "--help"], capture_output=True, text=True)
+    assert proc.returncode == 0
+    assert "usage: tenzor [DECK] [-o DIR] [--code 8|K]" in proc.stdout
+
+
+@pytest.mark.parametrize("args,fragment", [
+    (["--bogus"], "unknown option --bogus"),
+    (["--code"], "--code needs 8 or K"),
+    (["--code", "9", "x.crd"], '--code takes 8 (the "8" code) or K'),
+    (["-o"], "needs a directory"),
+    (["a.crd", "b.crd"], "one deck at a time"),
+    (["/nonexistent/deck.crd"], "cannot open the deck"),
+    (["/"], "cannot read the deck"),
+    ([""], "an empty argument is not a deck"),
+])
+def test_usage_errors_exit_2_with_one_clear_line(tenzor_exe, tmp_path, args, fragment):
+    proc = subprocess.run([tenzor_exe, *args], capture_output=True, text=True, cwd=tmp_path)
+    assert proc.returncode == 2
+    assert fragment in proc.stderr
+    assert "Fortran runtime" not in proc.stderr and "Backtrace" not in proc.stderr
+
+
+def test_unwritable_output_directory_exits_2(tenzor_exe, tmp_path):
+    blocker = tmp_path / "file"
+    blocker.write_text("not a directory")
+    proc = subprocess.run([tenzor_exe, EXAMPLE5, "-o", blocker / "out"], capture_output=True, text=True)
+    assert proc.returncode == 2
+    assert "cannot create the output directory" in proc.stderr
+
+
+def test_standard_input_and_default_output_directory(tenzor_exe, tmp_path):
+    proc = subprocess.run([tenzor_exe], stdin=EXAMPLE5.open("rb"), capture_output=True,
+                          text=True, cwd=tmp_path)
+    assert proc.returncode == 0, proc.stderr
+    assert "EXAMPLE5: tapes out/EXAMPLE5-small.ptp" in proc.stdout
+    names = sorted(p.name for p in (tmp_path / "out").iterdir())
+    assert names == ["EXAMPLE5-cond.ptp", "EXAMPLE5-cond.txt", "EXAMPLE5-large.ptp",
+                     "EXAMPLE5-large.txt", "EXAMPLE5-small.ptp", "EXAMPLE5-small.txt",
+                     "EXAMPLE5.job", "EXAMPLE5.lst"]
+
+
+def test_nested_output_directory_is_created(run_tenzor, tmp_path):
+    proc, out = run_tenzor(EXAMPLE5, out=tmp_path / "a" / "b" / "c")
+    assert proc.returncode == 0
+    assert (out / "EXAMPLE5-cond.ptp").exists()
+
+
+def test_output_is_byte_identical_run_after_run(run_tenzor):
+    decks = sorted((ROOT / "examples").rglob("*.crd"))
+    for deck in decks:
+        a, out_a = run_tenzor(deck)
+        b, out_b = run_tenzor(deck)
+        assert a.returncode == b.returncode
+        assert a.stdout.replace(bytes(out_a), b"") == b.stdout.replace(bytes(out_b), b"")
+        assert _files(out_a) == _files(out_b), deck
+
+
+def test_crlf_deck_reads_like_lf(run_tenzor):
+    text = EXAMPLE5.read_text()
+    _, out_lf = run_tenzor(text)
+    _, out_crlf = run_tenzor(text.replace("\n", "\r\n"))
+    assert _files(out_lf) == _files(out_crlf)
+
+
+def test_listing_has_heading_echo_statistics_and_plot(run_tenzor):
+    proc, out = run_tenzor(EXAMPLE5)
+    lines = (out / "EXAMPLE5.lst").read_text().splitlines()
+    assert all(len(line) <= 128 for line in lines)
+    text = "\n".join(lines)
+    assert "JOB      REPORT EXAMPLE 5" in text
+    assert "ENVELOPE *MAIN TENZOR" in text
+    deck = EXAMPLE5.read_text().splitlines()
+    m_card = next(i for i, line in enumerate(deck, 1) if line.startswith("M"))
+    assert f"{m_card:8d} {deck[m_card - 1]}" in lines
+    assert "TAPE L  CONDUCTORS" in text
+    # the saw: 8 x (5 mm + sqrt(17) mm) drawn, 32 mm back raised
+    assert "DRAWN         72.98 MM   TRAVEL         32.00 MM" in text
+    assert "CONTROL PLOT, TAPE L (CONDUCTORS)" in text
+
+
+def test_job_sheet_carries_what_the_tools_need(run_tenzor):
+    _, out = run_tenzor(EXAMPLE5)
+    job = read_job(out / "EXAMPLE5.job")
+    assert job["name"] == "EXAMPLE5"
+    assert job["code"] == "8"
+    assert job["scale"] == "1:1"
+    assert (job["start_x_mm"], job["start_y_mm"]) == ("10.00", "10.00")
+    for t, tool in (("small", "0.50"), ("large", "1.00"), ("cond", "0.50")):
+        assert job[f"{t}.tape"] == f"EXAMPLE5-{t}.ptp"
+        assert job[f"{t}.tool_mm"] == tool
+        data = (out / job[f"{t}.tape"]).read_bytes()
+        assert job[f"{t}.rows"] == str(len(data))
+        assert job[f"{t}.frames"] == str(len(tape.decode(data).frames))
+
+
+def test_package_names_are_sanitised(run_tenzor):
+    deck = "  MY/BOARD v1.2    \n" + "M" + " " * 35 + "1.00" + " " * 18 + "10\nE\n"
+    proc, out = run_tenzor(deck)
+    assert proc.returncode == 0, proc.stderr
+    assert (out / "MY_BOARD_v1_2-cond.ptp").exists()
+
+
+def test_fifo_and_standard_input_read_the_bytes_of_a_file(tenzor_exe, tmp_path):
+    """A deck through a FIFO (as `tenzor <(make-deck)` gives it) or standard
+    input reads exactly as the same bytes in a file: a CR not before a LF is
+    a bad byte in all three, never a line end."""
+    import os
+    import threading
+    deck = EXAMPLE5.read_bytes().replace(b"EXAMPLE5\n", b"EXAMPLE5\rX\n")
+    path = tmp_path / "deck.crd"
+    path.write_bytes(deck)
+    results = []
+    proc = subprocess.run([tenzor_exe, path, "-o", tmp_path / "a"], capture_output=True)
+    results.append(proc)
+    proc = subprocess.run([tenzor_exe, "-o", tmp_path / "b"], input=deck, capture_output=True)
+    results.append(proc)
+    fifo = tmp_path / "fifo"
+    os.mkfifo(fifo)
+    writer = threading.Thread(target=fifo.write_bytes, args=(deck,))
+    writer.start()
+    proc = subprocess.run([tenzor_exe, fifo, "-o", tmp_path / "c"], capture_output=True,
+                          timeout=60)
+    writer.join()
+    results.append(proc)
+    errs = [p.stderr.decode().replace(label, "DECK") for p, label in
+            zip(results, [str(path), "<stdin>", str(fifo)])]
+    assert [p.returncode for p in results] == [1, 1, 1]
+    assert errs[0] == errs[1] == errs[2]
+    assert "CARD 4 COL 9: BYTE 13 IS NOT A CARD CHARACTER" in errs[0]
+    assert _files(tmp_path / "a") == _files(tmp_path / "b") == _files(tmp_path / "c")

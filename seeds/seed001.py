@@ -1,0 +1,594 @@
+"""Seed 001: a DXF drawing to a TENZOR card deck.
+
+Source: ``shared/seeds/001_13d537a3fff5b337.txt``: Xiong Mudi, Xie Zhao,
+Xiao Wenli, Xing Zhongbao, "利用 CAD 图形交换文件实现激光直写设备的运动控制"
+(motion control of a laser direct-writing device from CAD drawing exchange
+files; Changchun Institute of Optics).  Its section 3 says what a drawing
+must carry besides the path (the start and end segments, the order of the
+segments, macros, hints, all as TEXT placed near the path); its section 4
+how the interpreter uses it: read FIRST's insertion point, compute its
+distance to every line (start and end point) and arc (centre and radius),
+take the nearest segment; then the text "1", its nearest segment, then "2",
+and so on up to the largest number.  Item 5 of section 3: a path walked
+again gets the later numbers too.
+
+What is built (docs/SEED001-DXF.md says why):
+
+* CIRCLE -> ``D`` pad of its diameter (on a layer named ``RING...``: an
+  ``O`` circle drawn with the conductor tool instead);
+* LWPOLYLINE, POLYLINE (2D) and LINE -> ``L``/``+`` conductors; the width
+  is the polyline's constant width, else the layer's ``_W<mm>`` suffix
+  (``SIGNAL_W0.8``), else blank (the conductor tool).  A closed
+  axis-parallel rectangle on a layer named ``PAD...`` is a rectangular pad.
+  Bulges are cut into chords within 0.005 mm;
+* ARC -> ``A`` card (DXF arcs run counter-clockwise: direction ``-``);
+* INSERT -> its block's entities, exploded;
+* TEXT / MTEXT: ``FIRST``, ``LAST`` and whole numbers 1, 2, 3 ... attach to
+  the nearest item (pads by their disc, the rest by their line) and fix the
+  drawing order: FIRST, then the numbers in order, then the items without a
+  label in drawing order, then LAST; the deck's P card then asks for deck
+  order (``D``).  Without any label TENZOR's optimiser orders the deck.
+* everything else (and the rest of a macro text such as ``FIRST OUT 1``) is
+  reported with its handle and layer and left out.
+
+The drawing is in mm; its origin becomes the start point unless ``origin``
+says which drawing point does; coordinates are rounded to 0.01 mm.
+"""
+
+from __future__ import annotations
+
+import argparse
+import math
+import re
+import sys
+from collections.abc import Iterable, Iterator, Sequence
+from dataclasses import dataclass, field
+from decimal import Decimal
+from pathlib import Path
+from typing import Any
+
+import ezdxf
+
+from harness import cards
+
+from .contour import ArcEl, Seg, arc_chords, contour_cards, distance_to
+
+#: Chord tolerance (mm) for polyline bulges.
+BULGE_TOL = 0.005
+#: The drawing's lower-left corner lands this far inside the field (mm)
+#: when no start point position is given.
+MARGIN_MM = 10
+_WIDTH = re.compile(r"_W(\d+(?:\.\d+)?)$", re.IGNORECASE)
+
+Point = tuple[float, float]
+
+
+@dataclass
+class Item:
+    """One deck item made from one entity: its cards, the geometry used for
+    the nearest-item rule, and where it came from."""
+
+    kind: str                   # pad, conductor, arc, circle
+    cards: list[str]
+    handle: str
+    layer: str
+    segments: list[Seg | ArcEl] = field(default_factory=list)
+    disc: tuple[float, float, float] | None = None     # a pad: x, y, r
+    rect: tuple[float, float, float, float] | None = None  # a pad: x0, y0, x1, y1
+
+    def distance(self, p: Point) -> float:
+        """The paper's distance from a label's insertion point."""
+        if self.disc is not None:
+            x, y, r = self.disc
+            return max(0.0, math.hypot(p[0] - x, p[1] - y) - r)
+        if self.rect is not None:
+            x0, y0, x1, y1 = self.rect
+            return math.hypot(max(x0 - p[0], 0.0, p[0] - x1), max(y0 - p[1], 0.0, p[1] - y1))
+        return min(distance_to(s, p) for s in self.segments)
+
+
+@dataclass
+class Label:
+    text: str
+    handle: str
+    layer: str
+    at: Point
+
+
+@dataclass
+class Conversion:
+    """The result: the items in deck order, the problems (one line each,
+    naming the entity's handle and layer) and whether labels fixed the
+    order."""
+
+    items: list[Item]
+    problems: list[str]
+    ordered: bool
+    bbox: tuple[float, float, float, float] | None
+
+
+def _u(v: float) -> int:
+    """mm -> units of 0.01 mm, rounded."""
+    return int(math.floor(v * 100 + 0.5))
+
+
+def _where(e: Any) -> str:
+    return f"{e.dxftype()} #{e.dxf.handle} on layer {e.dxf.layer}"
+
+
+def _layer_width(layer: str) -> int | None:
+    m = _WIDTH.search(layer)
+    return _u(float(m.group(1))) if m else None
+
+
+def _wcs(e: Any, pts: Iterable[Sequence[float]]) -> list[Point]:
+    """OCS points of a 2D entity in the drawing's coordinates."""
+    ocs = e.ocs()
+    return [(float(q[0]), float(q[1])) for q in ocs.points_to_wcs([(p[0], p[1], 0) for p in pts])] \
+        if ocs.transform else [(float(p[0]), float(p[1])) for p in pts]
+
+
+def _flat(e: Any) -> bool:
+    ex = getattr(e.dxf, "extrusion", (0, 0, 1))
+    return abs(ex[0]) < 1e-9 and abs(ex[1]) < 1e-9
+
+
+def _bulge_arc(p: Point, q: Point, bulge: float) -> ArcEl:
+    """The arc from p to q of a polyline vertex's bulge (tan of a quarter of
+    its angle; positive = counter-clockwise)."""
+    chord = math.dist(p, q)
+    theta = 4 * math.atan(bulge)
+    r = chord / (2 * math.sin(abs(theta) / 2))
+    mx, my = (p[0] + q[0]) / 2, (p[1] + q[1]) / 2
+    h = r * math.cos(theta / 2)
+    ux, uy = (q[0] - p[0]) / chord, (q[1] - p[1]) / chord
+    side = 1 if bulge > 0 else -1
+    cx, cy = mx - side * uy * h, my + side * ux * h
+    return ArcEl(cx, cy, p[0], p[1], q[0], q[1], cw=bulge < 0)
+
+
+def _polyline_item(e: Any, verts: list[tuple[Point, float]], closed: bool,
+                   width_mm: float, origin: Point, problems: list[str]) -> Item | None:
+    """A conductor (or a PAD-layer rectangle) from vertices with bulges."""
+    layer = e.dxf.layer
+    if closed and verts:
+        verts = verts + [(verts[0][0], 0.0)]
+    pts = [(x - origin[0], y - origin[1]) for (x, y), _ in verts]
+    if layer.upper().startswith("PAD") and closed:
+        xs, ys = sorted({round(p[0], 6) for p in pts}), sorted({round(p[1], 6) for p in pts})
+        if len(pts) == 5 and len(xs) == 2 and len(ys) == 2 and all(b == 0 for _, b in verts):
+            w, h = _u(xs[1]) - _u(xs[0]), _u(ys[1]) - _u(ys[0])
+            cx2, cy2 = _u(xs[0]) + _u(xs[1]), _u(ys[0]) + _u(ys[1])
+            if cx2 % 2 or cy2 % 2:
+                problems.append(f"{_where(e)}: rectangle's centre is off the 0.01 mm grid; left out")
+                return None
+            card = cards.d_card(cx2 // 2, cy2 // 2, w, h)
+            return Item("pad", [card], e.dxf.handle, layer, rect=(xs[0], ys[0], xs[1], ys[1]))
+        problems.append(f"{_where(e)}: a closed polyline on a PAD layer that is not an "
+                        f"axis-parallel rectangle; drawn as a conductor")
+    segs: list[Seg | ArcEl] = []
+    for k in range(len(pts) - 1):
+        p, q, bulge = pts[k], pts[k + 1], verts[k][1]
+        if p == q:
+            continue
+        segs.append(_bulge_arc(p, q, bulge) if abs(bulge) > 1e-12 else Seg(*p, *q))
+    if not segs:
+        problems.append(f"{_where(e)}: a polyline of zero length; left out")
+        return None
+    width = _u(width_mm) if width_mm > 0 else _layer_width(layer)
+    run: list[tuple[int, int]] = []
+    for s in segs:
+        pts_s = [(s.x0, s.y0)] + (arc_chords(s, BULGE_TOL)[1:] if isinstance(s, ArcEl)
+                                  else [(s.x1, s.y1)])
+        for x, y in pts_s:
+            u = (_u(x), _u(y))
+            if not run or u != run[-1]:
+                run.append(u)
+    if len(run) < 2:
+        problems.append(f"{_where(e)}: shorter than 0.01 mm; left out")
+        return None
+    body = [cards.l_card(*run[0], width)] + [cards.plus_card(*u) for u in run[1:]]
+    return Item("conductor", body, e.dxf.handle, layer, segments=segs)
+
+
+def _entity_items(e: Any, origin: Point, problems: list[str],
+                  labels: list[Label]) -> list[Item]:
+    """Items (or labels) of one entity; problems for what cannot be used."""
+    kind = e.dxftype()
+    layer = e.dxf.layer
+    if kind in ("TEXT", "MTEXT"):
+        text = e.plain_text() if kind == "MTEXT" else e.dxf.text
+        ins = e.dxf.insert
+        labels.append(Label(" ".join(text.split()), e.dxf.handle, layer,
+                            (float(ins[0]) - origin[0], float(ins[1]) - origin[1])))
+        return []
+    if kind in ("CIRCLE", "ARC", "LWPOLYLINE") and not _flat(e):
+        problems.append(f"{_where(e)}: drawn in a tilted plane; left out")
+        return []
+    if kind == "CIRCLE":
+        (c,) = _wcs(e, [e.dxf.center])
+        x, y, r = c[0] - origin[0], c[1] - origin[1], float(e.dxf.radius)
+        if layer.upper().startswith("RING"):
+            card = cards.o_card("-", _u(x), _u(y), _u(r))
+            return [Item("circle", [card], e.dxf.handle, layer,
+                         segments=[ArcEl(x, y, x + r, y, x + r, y, cw=False)])]
+        return [Item("pad", [cards.d_card(_u(x), _u(y), _u(2 * r))], e.dxf.handle, layer,
+                     disc=(x, y, r))]
+    if kind == "ARC":
+        (c,) = _wcs(e, [e.dxf.center])
+        p0, p1 = ((float(v[0]), float(v[1])) for v in (e.start_point, e.end_point))  # WCS
+        cw = e.dxf.extrusion[2] < 0
+        arc = ArcEl(c[0] - origin[0], c[1] - origin[1], p0[0] - origin[0], p0[1] - origin[1],
+                    p1[0] - origin[0], p1[1] - origin[1], cw=cw)
+        try:
+            body = contour_cards([arc])
+        except ValueError as exc:
+            problems.append(f"{_where(e)}: {exc}; left out")
+            return []
+        return [Item("arc", body, e.dxf.handle, layer, segments=[arc])]
+    if kind == "LINE":
+        p, q = e.dxf.start, e.dxf.end
+        verts = [((float(p[0]), float(p[1])), 0.0), ((float(q[0]), float(q[1])), 0.0)]
+        item = _polyline_item(e, verts, False, 0.0, origin, problems)
+        return [item] if item else []
+    if kind == "LWPOLYLINE":
+        raw = e.get_points("xyseb")
+        widths = {(float(s), float(w)) for _, _, s, w, _ in raw}
+        const = float(e.dxf.const_width) if e.dxf.hasattr("const_width") else 0.0
+        if const == 0 and widths != {(0.0, 0.0)}:
+            ws = {v for pair in widths for v in pair}
+            if len(ws) != 1:
+                problems.append(f"{_where(e)}: varying width; left out")
+                return []
+            const = ws.pop()
+        pts = _wcs(e, [(x, y) for x, y, *_ in raw])
+        verts = [(p, float(v[4])) for p, v in zip(pts, raw)]
+        item = _polyline_item(e, verts, bool(e.closed), const, origin, problems)
+        return [item] if item else []
+    if kind == "POLYLINE":
+        if not e.is_2d_polyline:
+            problems.append(f"{_where(e)}: a 3D polyline or mesh; left out")
+            return []
+        own = {float(v.dxf.start_width) for v in e.vertices} | \
+            {float(v.dxf.end_width) for v in e.vertices}
+        widths = own if own != {0.0} else {float(e.dxf.default_start_width),
+                                           float(e.dxf.default_end_width)}
+        if len(widths) != 1:
+            problems.append(f"{_where(e)}: varying width; left out")
+            return []
+        sw = widths.pop()
+        pts = _wcs(e, [v.dxf.location for v in e.vertices])
+        verts = [(p, float(v.dxf.bulge)) for p, v in zip(pts, e.vertices)]
+        item = _polyline_item(e, verts, bool(e.is_closed), sw, origin, problems)
+        return [item] if item else []
+    if kind == "INSERT":
+        out: list[Item] = []
+        for ve in e.virtual_entities():
+            if ve.dxf.handle is None:
+                ve.dxf.handle = e.dxf.handle
+            out += _entity_items(ve, origin, problems, labels)
+        return out
+    problems.append(f"{_where(e)}: cannot map a {kind}; left out")
+    return []
+
+
+def _order(items: list[Item], labels: list[Label], problems: list[str]) -> tuple[list[Item], bool]:
+    """Attach FIRST, LAST and numbers to the nearest items and order them
+    (section 4 of the paper); texts that are not labels are reported."""
+    first: list[int] = []
+    last: list[int] = []
+    numbered: dict[int, int] = {}
+    for lab in labels:
+        words = lab.text.split()
+        where = f"TEXT #{lab.handle} on layer {lab.layer}"
+        if not words:
+            continue
+        key = words[0].upper()
+        if key in ("FIRST", "LAST") or words[0].isdigit():
+            if len(words) > 1:
+                problems.append(f"{where}: macro {' '.join(words[1:])!r} after {words[0]} "
+                                f"cannot be mapped; left out")
+            if not items:
+                problems.append(f"{where}: label {words[0]} has no item to attach to")
+                continue
+            near = min(range(len(items)), key=lambda i: (items[i].distance(lab.at), i))
+            if key == "FIRST":
+                first.append(near)
+            elif key == "LAST":
+                last.append(near)
+            else:
+                n = int(words[0])
+                if n in numbered:
+                    problems.append(f"{where}: order number {n} given twice; this one ignored")
+                    continue
+                numbered[n] = near
+        else:
+            problems.append(f"{where}: text {lab.text!r} is not a label (FIRST, LAST, "
+                            f"1, 2, ...); left out")
+    for name, got in (("FIRST", first), ("LAST", last)):
+        if len(got) > 1:
+            problems.append(f"{name} given {len(got)} times; the first one is used")
+            del got[1:]
+    if not (first or last or numbered):
+        return items, False
+    seq = first + [numbered[n] for n in sorted(numbered)]
+    seen = set(seq) | set(last)
+    seq += [i for i in range(len(items)) if i not in seen] + last
+    if last and last[0] in first + list(numbered.values()):
+        problems.append("LAST is attached to an item that also has an earlier label")
+    return [items[i] for i in seq], True
+
+
+def convert(doc: Any, origin: Point = (0.0, 0.0)) -> Conversion:
+    """Items and problems of an ezdxf document's model space."""
+    problems: list[str] = []
+    labels: list[Label] = []
+    items: list[Item] = []
+    for e in doc.modelspace():
+        items += _entity_items(e, origin, problems, labels)
+    ordered_items, ordered = _order(items, labels, problems)
+    boxes = []
+    for it in items:
+        if it.disc:
+            x, y, r = it.disc
+            boxes.append((x - r, y - r, x + r, y + r))
+        elif it.rect:
+            boxes.append(it.rect)
+        for s in it.segments:
+            if isinstance(s, ArcEl):
+                boxes.append((s.cx - s.r, s.cy - s.r, s.cx + s.r, s.cy + s.r))
+            else:
+                boxes.append((min(s.x0, s.x1), min(s.y0, s.y1), max(s.x0, s.x1), max(s.y0, s.y1)))
+    bbox = (min(b[0] for b in boxes), min(b[1] for b in boxes),
+            max(b[2] for b in boxes), max(b[3] for b in boxes)) if boxes else None
+    return Conversion(ordered_items, problems, ordered, bbox)
+
+
+def package_name(path: str | Path) -> str:
+    """A package name from a file name: upper case, at most 18 characters."""
+    stem = re.sub(r"[^A-Za-z0-9_-]", "_", Path(path).stem).upper() or "DXF"
+    return stem[:18]
+
+
+def deck_text(conv: Conversion, name: str, start_mm: Point | None = None,
+              tools: tuple[Decimal, Decimal, Decimal] | None = None, job: str = "DXF2DECK") -> str:
+    """The card deck of a conversion: one package with a P card (the start
+    point's place on the field, the tools, deck order when labelled)."""
+    if start_mm is None:
+        x0, y0 = (MARGIN_MM - conv.bbox[0], MARGIN_MM - conv.bbox[1]) if conv.bbox else (0, 0)
+        start_mm = (max(x0, 0.0), max(y0, 0.0))
+    sx, sy = _u(start_mm[0]), _u(start_mm[1])
+    w = tools or (None, None, None)
+    body = [cards.p_card(sx, sy, *w, order="D" if conv.ordered else None)]
+    for it in conv.items:
+        body += it.cards
+    return cards.deck([cards.CardPackage(name, body)], job=job)
+
+
+def _pair(text: str) -> Point:
+    try:
+        x, y = (float(v) for v in text.split(","))
+    except ValueError:
+        raise ValueError(f"expected X,Y in mm, not {text!r}") from None
+    return x, y
+
+
+def _run(args: argparse.Namespace) -> int:
+    try:
+        origin = _pair(args.origin) if args.origin else (0.0, 0.0)
+        start = _pair(args.start) if args.start else None
+        tools = tuple(Decimal(v) for v in args.tools.split(",")) if args.tools else None
+        if tools is not None and len(tools) != 3:
+            raise ValueError("--tools needs W1,W2,W3")
+    except (ValueError, ArithmeticError) as exc:
+        print(f"dxf2deck: {exc}", file=sys.stderr)
+        return 2
+    try:
+        doc = ezdxf.readfile(args.drawing)
+    except OSError as exc:
+        print(f"dxf2deck: {args.drawing}: {exc.strerror or exc}", file=sys.stderr)
+        return 2
+    except ezdxf.DXFError as exc:
+        print(f"dxf2deck: {args.drawing}: not a DXF drawing: {exc}", file=sys.stderr)
+        return 2
+    conv = convert(doc, origin)
+    for line in conv.problems:
+        print(f"dxf2deck: {args.drawing}: {line}", file=sys.stderr)
+    if not conv.items:
+        print(f"dxf2deck: {args.drawing}: nothing to draw", file=sys.stderr)
+        return 1
+    text = deck_text(conv, args.name or package_name(args.drawing), start, tools,
+                     job=f"DXF2DECK {Path(args.drawing).name}"[:60])
+    if args.output:
+        try:
+            Path(args.output).write_text(text, encoding="ascii")
+        except OSError as exc:
+            print(f"dxf2deck: {args.output}: {exc.strerror or exc}", file=sys.stderr)
+            return 2
+    else:
+        sys.stdout.write(text)
+    unmapped = [p for p in conv.problems if "is not a label" not in p]
+    return 1 if unmapped else 0
+
+
+DXF2DECK_HELP = (
+    "Turn a DXF drawing (mm) into a card deck: CIRCLE -> pad (layer RING*: "
+    "circle), LWPOLYLINE/POLYLINE/LINE -> conductor (constant width, else "
+    "a layer name ending _W<mm>, else the tool; closed rectangles on a PAD* "
+    "layer -> rectangular pads), ARC -> arc, INSERT exploded; TEXT labels "
+    "FIRST, LAST, 1, 2, 3 ... attach to the nearest item and fix the order.  "
+    "Whatever cannot be mapped is reported with its handle and layer (exit "
+    "status 1; the deck is still written).")
+
+
+def _dxf2deck_arguments(p: argparse.ArgumentParser) -> None:
+    p.add_argument("drawing", metavar="DRAWING.dxf")
+    p.add_argument("-o", "--output", metavar="DECK", help="output deck (default stdout)")
+    p.add_argument("--origin", metavar="X,Y",
+                   help="the drawing point (mm) that becomes the start point (default 0,0)")
+    p.add_argument("--start", metavar="X0,Y0",
+                   help="the start point's place on the field, mm (default: the drawing's "
+                        f"lower-left corner {MARGIN_MM} mm inside the field)")
+    p.add_argument("--tools", metavar="W1,W2,W3", help="tools of the P card, mm")
+    p.add_argument("--name", help="package name (default: from the file name)")
+    p.set_defaults(func=_run)
+
+
+def add_dxf2deck(sub: argparse._SubParsersAction) -> None:
+    p = sub.add_parser("dxf2deck", help="a DXF drawing to a TENZOR card deck (seed 001)",
+                       description=DXF2DECK_HELP)
+    _dxf2deck_arguments(p)
+
+
+def main(argv: Sequence[str] | None = None) -> int:
+    """The console script ``dxf2deck``: ``python -m seeds dxf2deck`` alone."""
+    parser = argparse.ArgumentParser(prog="dxf2deck", description=DXF2DECK_HELP)
+    _dxf2deck_arguments(parser)
+    try:
+        args = parser.parse_args(argv)
+    except SystemExit as exc:          # argparse: --help (0) or usage error (2)
+        return int(exc.code or 0)
+    return int(args.func(args))
+
+
+def iter_problem_handles(problems: Sequence[str]) -> Iterator[str]:
+    """The handles named in problem lines (for tests and tools)."""
+    for line in problems:
+        m = re.search(r"#([0-9A-Fa-f]+)", line)
+        if m:
+            yield m.group(1)
+
+
+# ---------------------------------------------------------------------------
+# The known board of the round trip.
+# ---------------------------------------------------------------------------
+D = Decimal  # the board's figures are exact decimals, written short
+
+# The known board of the DXF round trip (seed 001), as a card deck and as
+# a DXF drawing written with ezdxf.
+#
+#     python -m seeds dxfboard examples/dxf
+#
+# writes ``board.dxf`` (the drawing, with the paper's ordering labels, a
+# macro, a hint and two entities dxf2deck cannot map) and ``board-known.crd``
+# (the same board as cards, written directly).  ``python -m seeds dxf2deck
+# examples/dxf/board.dxf -o examples/dxf/board.crd`` must give a deck whose
+# tapes draw exactly the known board: seeds/tests/test_seed001_dxf.py runs
+# TENZOR on it and checks every tape against ``board-known.crd``'s ideal
+# layers.  The files are byte-identical from run to run (ezdxf's fixed
+# metadata: no clock, no random GUID).
+#
+# Board (mm, start point at the drawing's origin): a DIP-8 footprint of 1.6 mm
+# pads, four 3.5 mm mounting holes (large-pad tape), five 2 x 5 mm connector
+# fingers (closed rectangles on layer PAD), a 1.5 mm supply conductor
+# (constant width), a signal on layer 0 (the tool's width), a LINE on layer
+# SIGNAL_W0.8 (the layer rule), an ARC and a circle on layer RING.
+BOARD_NAME = "BOARD"
+#: Where dxf2deck puts the start point by default: the lower-left corner of
+#: the board (x: a mounting hole's edge at 2.25 mm; y: the fingers' at 2 mm)
+#: 10 mm inside the field.
+START_MM = (D("7.75"), D("8.00"))
+
+DIP = [(D("20.00"), D("20.00") + D("2.54") * i) for i in range(4)] + \
+      [(D("27.62"), D("20.00") + D("2.54") * i) for i in range(4)]
+HOLES = [(D(4), D(4)), (D(56), D(4)), (D(4), D(46)), (D(56), D(46))]
+FINGERS = [(D("30.00") + D("2.54") * i, D("4.50")) for i in range(5)]
+SUPPLY = [(D(8), D(10)), (D(50), D(10)), (D(50), D(40))]
+SIGNAL1 = [(D("20.00"), D("27.62")), (D(14), D(34)), (D(14), D(42))]
+SIGNAL2 = [(D("27.62"), D("20.00")), (D(36), D(20))]
+ARC = ((D(44), D(28)), D(4))                        # 0 to 90 degrees, counter-clockwise
+RING = ((D(10), D(30)), D(3))
+
+#: Labels: text -> insertion point.  The order they give: FIRST the supply,
+#: 1 the LINE, 2 the arc, 3 the signal on layer 0, 4 the LINE again (the
+#: paper's "later numbers" for a path walked twice), LAST the ring.
+LABELS = [("FIRST OUT 1", (30, 11.5)), ("1", (32, 21)), ("2", (47, 31)), ("3", (15, 38)),
+          ("4", (33, 19)), ("LAST", (10, 34))]
+
+
+def known_cards() -> list[str]:
+    """The board as cards, in the order the labels ask for."""
+    p = cards.p_card(*START_MM, order="D")
+    pads = [cards.d_card(x, y, D("1.6")) for x, y in DIP]
+    pads += [cards.d_card(x, y, D("3.5")) for x, y in HOLES]
+    pads += [cards.d_card(x, y, D(2), D(5)) for x, y in FINGERS]
+
+    def cond(pts: list, w: D | None) -> list[str]:
+        return [cards.l_card(*pts[0], w)] + [cards.plus_card(*q) for q in pts[1:]]
+
+    (cx, cy), r = ARC
+    arc = [cards.a_card("-", cx, cy, cx + r, cy, cx, cy + r)]
+    ring = [cards.o_card("-", *RING[0], RING[1])]
+    sig2 = cond(SIGNAL2, D("0.8"))
+    # deck order: FIRST, 1, 2, 3, 4, then the unlabelled items in drawing
+    # order (as write_dxf draws them), then LAST
+    return [p] + cond(SUPPLY, D("1.5")) + sig2 + arc + cond(SIGNAL1, None) + sig2 + pads + ring
+
+
+def known_deck() -> str:
+    return cards.deck([cards.CardPackage(BOARD_NAME, known_cards())], job="DXF ROUND TRIP, KNOWN BOARD")
+
+
+def write_dxf(path: str | Path, offset: tuple[float, float] = (0.0, 0.0)) -> None:
+    """The board as a DXF drawing (R2000), every point moved by ``offset``
+    mm (so ``dxf2deck --origin`` can be tested)."""
+
+    ox, oy = offset
+
+    def pt(p: tuple) -> tuple[float, float]:
+        return float(p[0]) + ox, float(p[1]) + oy
+
+    saved = ezdxf.options.write_fixed_meta_data_for_testing
+    ezdxf.options.write_fixed_meta_data_for_testing = True
+    try:
+        doc = ezdxf.new("R2000")
+        for name in ("PAD", "SIGNAL_W0.8", "RING", "OUTLINE", "NOTES"):
+            doc.layers.add(name)
+        msp = doc.modelspace()
+        # drawing order: conductors, arc, pads, ring (the unlabelled pads
+        # follow the labelled items in this order)
+        msp.add_lwpolyline([pt(p) for p in SUPPLY], dxfattribs={"const_width": 1.5})
+        msp.add_line(pt(SIGNAL2[0]), pt(SIGNAL2[1]), dxfattribs={"layer": "SIGNAL_W0.8"})
+        (cx, cy), r = ARC
+        msp.add_arc(pt((cx, cy)), float(r), 0, 90)
+        msp.add_lwpolyline([pt(p) for p in SIGNAL1])
+        for x, y in DIP:
+            msp.add_circle(pt((x, y)), 0.8)
+        for x, y in HOLES:
+            msp.add_circle(pt((x, y)), 1.75)
+        for x, y in FINGERS:
+            x0, x1, y0, y1 = float(x) - 1, float(x) + 1, float(y) - 2.5, float(y) + 2.5
+            msp.add_lwpolyline([pt((x0, y0)), pt((x1, y0)), pt((x1, y1)), pt((x0, y1))],
+                               close=True, dxfattribs={"layer": "PAD"})
+        msp.add_circle(pt(RING[0]), float(RING[1]), dxfattribs={"layer": "RING"})
+        for text, at in LABELS:
+            msp.add_text(text, height=1.0, dxfattribs={"insert": pt(at), "layer": "NOTES"})
+        # what dxf2deck reports and leaves out: a hint, a spline, a point
+        msp.add_text("DRILL 0.8 MM", height=1.0, dxfattribs={"insert": pt((40, 46)),
+                                                             "layer": "NOTES"})
+        msp.add_spline([pt((0, 0)), pt((30, -2)), pt((60, 0))], dxfattribs={"layer": "OUTLINE"})
+        msp.add_point(pt((30, 25)), dxfattribs={"layer": "OUTLINE"})
+        doc.saveas(str(path))
+    finally:
+        ezdxf.options.write_fixed_meta_data_for_testing = saved
+
+
+def _run_board(args: argparse.Namespace) -> int:
+
+    out = Path(args.dir)
+    try:
+        out.mkdir(parents=True, exist_ok=True)
+        write_dxf(out / "board.dxf")
+        (out / "board-known.crd").write_text(known_deck(), encoding="ascii")
+    except OSError as exc:
+        print(f"dxfboard: {out}: {exc.strerror or exc}", file=sys.stderr)
+        return 2
+    return 0
+
+
+def add_dxfboard(sub: argparse._SubParsersAction) -> None:
+    p = sub.add_parser("dxfboard", help="write the DXF round trip's known board (seed 001)",
+                       description="Write DIR/board.dxf (with ezdxf) and DIR/board-known.crd: "
+                                   "the same board as a drawing and as cards.")
+    p.add_argument("dir", nargs="?", default="examples/dxf", metavar="DIR")
+    p.set_defaults(func=_run_board)
