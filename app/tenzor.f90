@@ -1,11 +1,12 @@
 !> tenzor: the modern shell around the 1977 program TENZOR (legacy/tenzor.f).
 !> It does what the Dubna monitor did for the program: finds the deck, sets up
-!> the card reader, the printer and the punches (src/em703_devices.f90), calls
+!> the card reader, the printer and the punches (src/monitor/), calls
 !> the FORTRAN 77 entry point and turns its verdict into an exit status:
 !> 0 all packages punched, 1 the deck had errors, 2 usage or I/O trouble.
 program tenzor_shell
     use, intrinsic :: iso_fortran_env, only: error_unit, output_unit
-    use em703_devices, only: dev_load_deck, dev_load_stdin, dev_set_output, dev_io_failed
+    use base_args, only: get_arg
+    use monitor_devices, only: dev_load_deck, dev_load_stdin, dev_set_output, dev_io_failed
     implicit none
 
     interface
@@ -72,15 +73,6 @@ program tenzor_shell
     if (irc /= 0) stop 1, quiet=.true.
 
 contains
-
-    function get_arg(k) result(s)
-        integer, intent(in) :: k
-        character(len=:), allocatable :: s
-        integer :: n
-        call get_command_argument(k, length=n)
-        allocate(character(len=n) :: s)
-        if (n > 0) call get_command_argument(k, s)
-    end function get_arg
 
     subroutine usage(unit)
         integer, intent(in) :: unit

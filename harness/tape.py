@@ -314,15 +314,15 @@ class _Reader:
             if self.evidence is not None:
                 first = self.data[self.evidence - 1]
                 raise TapeError(n, f"mixed code: digit {d} punched as "
-                                   f"{value:02o}, but row {self.evidence} has "
+                                   f"{value:02o} (octal), but row {self.evidence} has "
                                    f"{describe(first)} of code {self.code}")
             if self.code == "K":
                 raise TapeError(n, f"parity error: digit {d} punched as "
                                    f"{value:02o}, controlled code expects "
-                                   f"{DIGITS_K[d]:02o}")
-            raise TapeError(n, f"code {value:02o} is not valid in code 8 "
+                                   f"{DIGITS_K[d]:02o} (octal)")
+            raise TapeError(n, f"code {value:02o} (octal) is not valid in code 8 "
                                f"(digit {d} of the controlled code K)")
-        raise TapeError(n, f"code {value:02o} is not an EM-703 code")
+        raise TapeError(n, f"code {value:02o} (octal) is not an EM-703 code")
 
     def next(self) -> _Row | None:
         got = self.raw()

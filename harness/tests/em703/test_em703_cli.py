@@ -95,7 +95,7 @@ def test_a_bad_tape_is_status_1_naming_the_row(em703_exe, tmp_path) -> None:
     bad.write_bytes(bytes(data))
     for sub in ("list", "sim", "gcode"):
         line = one_line(run(em703_exe, sub, bad, check=1))
-        assert line == f"{bad}: row 26: code 33 is not an EM-703 code"
+        assert line == f"{bad}: row 26: code 33 (octal) is not an EM-703 code"
 
 
 def test_a_bad_job_sheet_is_status_1_naming_the_line(em703_exe, example_jobs, tmp_path) -> None:

@@ -345,15 +345,15 @@ DECODE_ERRORS: list[tuple[str, bytes, str, int, str]] = [
     ("high bits in leader", bytes([0x20, 0o37, 0o37]),
      "auto", 1, "byte 0x20 has bits above the low 5 set (not a 5-track row)"),
     ("not a code", with_gm(0o20, 0o03, 0o15),
-     "8", 6, "code 15 is not an EM-703 code"),
+     "8", 6, "code 15 (octal) is not an EM-703 code"),
     ("controlled digit in code 8", with_gm(0o20, 0o23, 0o16, 0o01, 0o00, 0o17),
-     "8", 5, "code 23 is not valid in code 8 (digit 3 of the controlled code K)"),
+     "8", 5, "code 23 (octal) is not valid in code 8 (digit 3 of the controlled code K)"),
     ("parity error", with_gm(0o20, 0o03, 0o16, 0o01, 0o00, 0o17),
-     "K", 5, "parity error: digit 3 punched as 03, controlled code expects 23"),
+     "K", 5, "parity error: digit 3 punched as 03, controlled code expects 23 (octal)"),
     ("parity error 9", with_gm(0o20, 0o11, 0o16, 0o01, 0o00, 0o17),
-     "K", 5, "parity error: digit 9 punched as 11, controlled code expects 31"),
+     "K", 5, "parity error: digit 9 punched as 11, controlled code expects 31 (octal)"),
     ("mixed code", with_gm(0o20, 0o25, 0o21, 0o05, 0o16, 0o01, 0o00, 0o17),
-     "auto", 7, "mixed code: digit 5 punched as 05, but row 5 has digit 5 (25) of code K"),
+     "auto", 7, "mixed code: digit 5 punched as 05 (octal), but row 5 has digit 5 (25) of code K"),
     ("X with K10", with_gm(0o12, 0o03, 0o16, 0o01, 0o00, 0o17),
      "8", 4, "X/Y only with K11/K13 (this frame is K10)"),
     ("Y with K20", with_gm(0o13, 0o03, 0o20, 0o01, 0o16, 0o02, 0o00, 0o17),
@@ -497,7 +497,7 @@ def test_cli_decode_error(tmp_path, capsys) -> None:  # type: ignore[no-untyped-
     assert main(["decode", str(path), "--code", "8"]) == 1
     captured = capsys.readouterr()
     assert captured.out == ""
-    assert captured.err == (f"{path}: row 23: code 23 is not valid in code 8 "
+    assert captured.err == (f"{path}: row 23: code 23 (octal) is not valid in code 8 "
                             "(digit 3 of the controlled code K)\n")
 
 

@@ -332,7 +332,7 @@ def test_corrupt_row_is_a_code_error_with_its_row(board, tmp_path) -> None:
     path.write_bytes(bytes(data))
     (r,) = verify.verify(BOARD, out).reasons
     assert (r.kind, r.row) == ("code", 30)
-    assert r.message == "row 30: code or grammar error: code 15 is not an EM-703 code"
+    assert r.message == "row 30: code or grammar error: code 15 (octal) is not an EM-703 code"
     data[29] = 0o37                         # a GM inside a frame: a grammar error
     path.write_bytes(bytes(data))
     (r,) = verify.verify(BOARD, out).reasons

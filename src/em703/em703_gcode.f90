@@ -14,14 +14,14 @@
 !> the step angle of seed 002, 2*arccos(1 - tol/R), so that no point of a chord
 !> is farther than tol (mm) from the arc; the bound keeps a margin for the
 !> rounding of the chord ends to 0.001 mm. An arc's end may lie up to one unit
-!> off the circle through its start (SPEC section 3); the chords then follow
+!> off the circle through its start (docs/TAPE.md, Frames); the chords then follow
 !> the arc whose radius changes evenly from the start's to the end's, so that
 !> the last chord ends exactly at the tape's end point.
 module em703_gcode
     use, intrinsic :: iso_fortran_env, only: int64, real64
     use em703_sim, only: run_t, seg_t, SEG_LINE, SEG_TRAVEL, SEG_ARC, SEG_DOT, SEG_RAISE, &
                          TWO_PI, LINE_SPEED, ARC_SPEED
-    use em703_text, only: text_t, str, fixed, mm
+    use base_text, only: text_t, str, fixed, mm
     implicit none
     private
     public :: gcode_program, chord_count

@@ -1,13 +1,13 @@
 !> The subcommands of the em703 command, one function each, called by
-!> app/em703.f90 once it has parsed the arguments. Each reads its files,
+!> app/em703.f90 once src/em703/em703_cli.f90 has parsed the arguments. Each reads its files,
 !> calls the library, writes its output and returns the exit status:
 !> 0 done, 1 the input had errors, 2 I/O trouble. Every message goes to
 !> standard error as one line naming the file and the row (or line).
 module em703_commands
-    use, intrinsic :: iso_fortran_env, only: int64, real64, error_unit
-    use em703_error, only: error_t, error_text, new_error
-    use em703_io, only: read_bytes, read_text, write_text, write_bytes, print_text
-    use em703_text, only: text_t, str, fixed, mm, ends_with
+    use, intrinsic :: iso_fortran_env, only: int64, real64, output_unit
+    use base_error, only: error_t, error_text, new_error
+    use base_io, only: read_bytes, read_text, write_text, write_bytes, print_text, say
+    use base_text, only: text_t, str, fixed, mm, ends_with
     use em703_codec, only: tape_t, decode_tape, tape_text
     use em703_sim, only: run_t, simulate, field_check, shift_run
     use em703_jobsheet, only: job_t, read_job, NLAYERS
@@ -16,20 +16,14 @@ module em703_commands
     use em703_gerber, only: gerber_image
     use em703_punch, only: punch_text
     use em703_view, only: view_tape, guess_code
+    use em703_split, only: split_move
     implicit none
     private
-    public :: run_list, run_sim, run_svg, run_gcode, run_gerber, run_punch, run_view, say
+    public :: run_list, run_sim, run_svg, run_gcode, run_gerber, run_punch, run_view, run_split
 
     integer, parameter, public :: EXIT_OK = 0, EXIT_INPUT = 1, EXIT_USAGE = 2
 
 contains
-
-    !> One line on standard error.
-    subroutine say(line)
-        character(len=*), intent(in) :: line
-        integer :: ios
-        write(error_unit, '(a)', iostat=ios) line
-    end subroutine say
 
     !> Read and decode a tape; status 0, 1 (bad tape) or 2 (cannot read).
     subroutine load_tape(path, code, rows, tape, status)
@@ -359,5 +353,19 @@ contains
         call view_tape(rows, c, first, last, text)
         call print_text(text%value())
     end function run_view
+
+    ! ------------------------------------------------------------------
+    !> em703 split: the frames of the straight move (dx, dy) pulses, at most
+    !> max_pulses per axis each (em703_split), one "DX DY" pair a line.
+    integer function run_split(dx, dy, max_pulses) result(status)
+        integer(int64), intent(in) :: dx, dy, max_pulses
+        integer(int64), allocatable :: dxs(:), dys(:)
+        integer :: k, ios
+        call split_move(dx, dy, max_pulses, dxs, dys)
+        do k = 1, size(dxs)
+            write(output_unit, '(i0, 1x, i0)', iostat=ios) dxs(k), dys(k)
+        end do
+        status = EXIT_OK
+    end function run_split
 
 end module em703_commands

@@ -13,9 +13,9 @@
 !>
 !> The deck is read byte for byte, whatever kind of file it is (a regular
 !> file, a pipe, a FIFO, standard input), so every way in reads the same cards.
-module em703_devices
+module monitor_devices
     use, intrinsic :: iso_fortran_env, only: error_unit, output_unit
-    use em703_os, only: make_dirs, rename_file, remove_file, is_dir, read_fd
+    use base_os, only: make_dirs, rename_file, remove_file, is_dir, read_fd
     implicit none
     private
 
@@ -322,4 +322,4 @@ contains
         dev_io_failed = io_failed
     end function dev_io_failed
 
-end module em703_devices
+end module monitor_devices

@@ -2,12 +2,12 @@
 !> report's examples and every class of error, with its row), the simulator
 !> (cycles, arcs, circles, dots, the field), the translators (SVG, G-code with
 !> and without chords, Gerber), the ISO and EIA punch, the tape picture and
-!> the job sheet. Expected values come from the report and SPEC, worked by hand.
-program test_em703
+!> the job sheet. Expected values come from the report and docs/, worked by hand.
+program test_em703_tools
     use, intrinsic :: iso_fortran_env, only: int64, real64
-    use em703_check, only: check, check_int, check_str, summary
-    use em703_error, only: error_t, error_text
-    use em703_text, only: text_t, str, fixed, mm, octal, parse_mm, parse_real
+    use checks, only: check, check_int, check_str, summary
+    use base_error, only: error_t, error_text
+    use base_text, only: text_t, str, fixed, mm, octal, parse_mm, parse_real
     use em703_codec, only: frame_t, tape_t, decode_tape, encode_tape, frame_text, tape_text, &
                            on_circle
     use em703_sim, only: run_t, simulate, field_check, SEG_ARC, SEG_LINE, SEG_DOT, SEG_TRAVEL, &
@@ -18,7 +18,7 @@ program test_em703
     use em703_punch, only: punch_text, iso_row, eia_row, eia_meaning, iso_meaning, LEADER
     use em703_view, only: view_tape, guess_code
     use em703_jobsheet, only: job_t, read_job, parse_scale, machine_scale
-    use em703_io, only: write_text
+    use base_io, only: write_text
     use em703_split, only: split_move
     implicit none
 
@@ -518,13 +518,13 @@ contains
         type(error_t), allocatable :: err
         integer :: num, den
         logical :: ok
-        call write_text('build/test_em703.job', '# a job sheet' // achar(10) // 'name = T' // &
+        call write_text('build/test_em703_tools.job', '# a job sheet' // achar(10) // 'name = T' // &
             achar(10) // 'code = K' // achar(10) // 'scale = 2:1' // achar(10) // &
             'start_x_mm = 100.50' // achar(10) // 'start_y_mm = 7' // achar(10) // &
             'small.tape = T-small.ptp' // achar(10) // 'small.tool_mm = 0.40' // achar(10) // &
             'large.tape = T-large.ptp' // achar(10) // 'large.tool_mm = 1.00' // achar(10) // &
             'cond.tape = T-cond.ptp' // achar(10) // 'cond.tool_mm = 0.5' // achar(10), err)
-        call read_job('build/test_em703.job', job, err)
+        call read_job('build/test_em703_tools.job', job, err)
         call check(.not. allocated(err), 'job sheet reads')
         if (allocated(err)) return
         call check(job%name == 'T' .and. job%code == 'K' .and. job%num == 2 .and. job%den == 1, &
@@ -532,10 +532,10 @@ contains
         call check(job%start_x == 10050 .and. job%start_y == 700, 'start point in units')
         call check_str(job%layers(3)%path, 'build/T-cond.ptp', 'tape beside the job sheet')
         call check(job%layers(1)%tool == 40 .and. job%layers(3)%tool == 50, 'tools in units')
-        call write_text('build/test_em703.job', 'name = T' // achar(10) // 'scale 1:1' // achar(10), err)
-        call read_job('build/test_em703.job', job, err)
+        call write_text('build/test_em703_tools.job', 'name = T' // achar(10) // 'scale 1:1' // achar(10), err)
+        call read_job('build/test_em703_tools.job', job, err)
         call check(allocated(err), 'a line without " = " is an error')
-        if (allocated(err)) call check_str(error_text(err), 'build/test_em703.job: line 2: ' // &
+        if (allocated(err)) call check_str(error_text(err), 'build/test_em703_tools.job: line 2: ' // &
             'not a "key = value" line: "scale 1:1"', 'job sheet error names the line')
         call parse_scale('1:100', num, den, ok)
         call check(ok .and. machine_scale(num, den), '1:100 is a machine scale')
@@ -590,4 +590,4 @@ contains
                    'split: a negative move sums back and keeps the limit')
     end subroutine test_split_seed004
 
-end program test_em703
+end program test_em703_tools

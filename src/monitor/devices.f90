@@ -1,11 +1,11 @@
 !> The device routines that the FORTRAN 77 programs in legacy/ call, as plain
 !> external subroutines with the argument types of their CALLs there. Each one
-!> only hands its arguments to the em703_devices module.
+!> only hands its arguments to the monitor_devices module.
 
 !> Card reader: the next card; ncol is the length of the line (more than 80 is
 !> an error that TENZOR reports), iend = 1 when the deck is exhausted.
 subroutine dvcard(card, ncol, iend)
-    use em703_devices, only: dev_next_card
+    use monitor_devices, only: dev_next_card
     implicit none
     character(len=80), intent(out) :: card
     integer, intent(out) :: ncol, iend
@@ -14,7 +14,7 @@ end subroutine dvcard
 
 !> Line printer: one line of the package's listing.
 subroutine dvprnt(line)
-    use em703_devices, only: dev_print
+    use monitor_devices, only: dev_print
     implicit none
     character(len=*), intent(in) :: line
     call dev_print(line)
@@ -22,7 +22,7 @@ end subroutine dvprnt
 
 !> Operator's console: one error line.
 subroutine dverr(line)
-    use em703_devices, only: dev_error
+    use monitor_devices, only: dev_error
     implicit none
     character(len=*), intent(in) :: line
     call dev_error(line)
@@ -30,7 +30,7 @@ end subroutine dverr
 
 !> Begin the output of the package whose file name is name.
 subroutine dvopen(name)
-    use em703_devices, only: dev_open
+    use monitor_devices, only: dev_open
     implicit none
     character(len=*), intent(in) :: name
     call dev_open(name)
@@ -38,7 +38,7 @@ end subroutine dvopen
 
 !> Tape punch iu (1 small pads, 2 large pads, 3 conductors): one row.
 subroutine dvpnch(iu, irow)
-    use em703_devices, only: dev_punch
+    use monitor_devices, only: dev_punch
     implicit none
     integer, intent(in) :: iu, irow
     call dev_punch(iu, irow)
@@ -46,7 +46,7 @@ end subroutine dvpnch
 
 !> One line of the frame text of tape iu.
 subroutine dvtext(iu, line)
-    use em703_devices, only: dev_text
+    use monitor_devices, only: dev_text
     implicit none
     integer, intent(in) :: iu
     character(len=*), intent(in) :: line
@@ -55,7 +55,7 @@ end subroutine dvtext
 
 !> One line of the job sheet.
 subroutine dvjob(line)
-    use em703_devices, only: dev_job
+    use monitor_devices, only: dev_job
     implicit none
     character(len=*), intent(in) :: line
     call dev_job(line)
@@ -63,7 +63,7 @@ end subroutine dvjob
 
 !> Close the package: ikeep = 1 keeps its tapes, 0 discards them.
 subroutine dvclos(ikeep)
-    use em703_devices, only: dev_close
+    use monitor_devices, only: dev_close
     implicit none
     integer, intent(in) :: ikeep
     call dev_close(ikeep == 1)

@@ -11,7 +11,7 @@
 module em703_gerber
     use, intrinsic :: iso_fortran_env, only: int64, real64
     use em703_sim, only: run_t, seg_t, SEG_LINE, SEG_TRAVEL, SEG_ARC, SEG_DOT, TWO_PI
-    use em703_text, only: text_t, str, mm
+    use base_text, only: text_t, str, mm
     implicit none
     private
     public :: gerber_image

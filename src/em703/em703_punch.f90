@@ -19,8 +19,8 @@
 !> dropped (CR LF is one end of block); another character outside the code is
 !> an error naming its line and column.
 module em703_punch
-    use em703_error, only: error_t, new_error, AT_LINE
-    use em703_text, only: octal
+    use base_error, only: error_t, new_error, AT_LINE
+    use base_text, only: octal
     implicit none
     private
     public :: punch_text, iso_row, eia_row, iso_meaning, eia_meaning, holes

@@ -1,6 +1,6 @@
 !> A very small test-suite module: checks count passes and failures, a failure
 !> prints what was expected and what came; the main prints 'N passed, N failed'.
-module em703_check
+module checks
     use, intrinsic :: iso_fortran_env, only: error_unit
     implicit none
     private
@@ -42,4 +42,4 @@ contains
         summary = merge(0, 1, nfail == 0)
     end function summary
 
-end module em703_check
+end module checks

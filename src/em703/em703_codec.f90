@@ -2,7 +2,7 @@
 !> write frames as text.
 !>
 !> Source: Pakhomov, JINR P11-10356 (1977), Table I "Коды координатографа
-!> ЭМ-703" and "Состав кадра"; SPEC sections 2-4; docs/TAPE.md. The table is
+!> ЭМ-703" and "Состав кадра"; docs/TAPE.md and docs/FILES.md. The table is
 !> transcribed here from the report, independently of legacy/tzbd.f and of
 !> harness/tape.py.
 !>
@@ -13,8 +13,8 @@
 !> found only when the data ends names the row just past the last one.
 module em703_codec
     use, intrinsic :: iso_fortran_env, only: int64, real64
-    use em703_error, only: error_t, new_error, AT_ROW
-    use em703_text, only: str, octal, fixed, text_t
+    use base_error, only: error_t, new_error, AT_ROW
+    use base_text, only: str, octal, fixed, text_t
     implicit none
     private
     public :: frame_t, tape_t, decode_tape, encode_tape, frame_rows, frame_text, &
@@ -359,19 +359,20 @@ contains
             d = rd%foreign(value)
             if (rd%evidence > 0) then
                 call new_error(err, 'mixed code: digit ' // str(d) // ' punched as ' // &
-                    octal(value, 2) // ', but row ' // str(rd%evidence) // ' has ' // &
+                    octal(value, 2) // ' (octal), but row ' // str(rd%evidence) // ' has ' // &
                     describe_row(rd%data(rd%evidence)) // ' of code ' // rd%code, AT_ROW, n)
             else if (rd%code == 'K') then
                 call new_error(err, 'parity error: digit ' // str(d) // ' punched as ' // &
                     octal(value, 2) // ', controlled code expects ' // &
-                    octal(DIGITS_K(d), 2), AT_ROW, n)
+                    octal(DIGITS_K(d), 2) // ' (octal)', AT_ROW, n)
             else
                 call new_error(err, 'code ' // octal(value, 2) // &
-                    ' is not valid in code 8 (digit ' // str(d) // &
+                    ' (octal) is not valid in code 8 (digit ' // str(d) // &
                     ' of the controlled code K)', AT_ROW, n)
             end if
         else
-            call new_error(err, 'code ' // octal(value, 2) // ' is not an EM-703 code', AT_ROW, n)
+            call new_error(err, 'code ' // octal(value, 2) // ' (octal) is not an EM-703 code', &
+                           AT_ROW, n)
         end if
     end subroutine next_row
 
@@ -771,7 +772,7 @@ contains
     end subroutine encode_tape
 
     ! ------------------------------------------------------------------
-    ! Frame text (SPEC section 4).
+    ! Frame text (docs/FILES.md: the NAME-*.txt files).
     ! ------------------------------------------------------------------
 
     !> One frame as text, e.g. "DX300 DY400 CYC8 K10 KK"; utf8 gives the

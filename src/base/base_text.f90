@@ -1,7 +1,7 @@
 !> Text helpers of the em703 tools: a growing text buffer, and numbers
 !> formatted the same way on every machine (integers, fixed decimals without
 !> a negative zero, octal).
-module em703_text
+module base_text
     use, intrinsic :: iso_fortran_env, only: int64, real64
     implicit none
     private
@@ -255,4 +255,4 @@ contains
         ok = ios == 0
     end subroutine parse_real
 
-end module em703_text
+end module base_text

@@ -1,7 +1,7 @@
 !> The EM-703 coordinatograph, simulated frame by frame.
 !>
-!> Source: SPEC sections 1 and 3 (the report's "Описание координатографа" and
-!> "Состав кадра"). Positions are integers in tape units (0.01 mm) relative to
+!> Source: the report's "Описание координатографа" and "Состав кадра"
+!> (docs/TAPE.md). Positions are integers in tape units (0.01 mm) relative to
 !> the start point; lengths and the bounding box come out in millimetres.
 !>
 !> * The tool starts raised at (0, 0).
@@ -17,13 +17,13 @@
 module em703_sim
     use, intrinsic :: iso_fortran_env, only: int64, real64
     use em703_codec, only: frame_t
-    use em703_error, only: error_t, new_error, AT_ROW
-    use em703_text, only: str, fixed, mm
+    use base_error, only: error_t, new_error, AT_ROW
+    use base_text, only: str, fixed, mm
     implicit none
     private
     public :: seg_t, run_t, simulate, arc_sweep, arc_extent, field_check, seg_box, shift_run
 
-    !> Speeds of SPEC section 1, mm/min; the field, mm; the executed-frame limit.
+    !> Speeds of the report's machine, mm/min; the field, mm; the executed-frame limit.
     real(real64), parameter, public :: LINE_SPEED = 5500.0_real64, ARC_SPEED = 1500.0_real64, &
                                        TRAVEL_SPEED = 5500.0_real64
     real(real64), parameter, public :: FIELD_MM = 1200.0_real64

@@ -1,9 +1,9 @@
 !> Fortran tests: the number reader and the text helpers of the FORTRAN 77
 !> programs (called through explicit interfaces, as the shell calls TENZOR), and
 !> the card reader of the device layer.
-program test_main
-    use em703_check, only: check, check_int, check_str, summary
-    use em703_devices, only: dev_load_deck, dev_next_card
+program test_legacy_monitor
+    use checks, only: check, check_int, check_str, summary
+    use monitor_devices, only: dev_load_deck, dev_next_card
     implicit none
 
     interface
@@ -48,7 +48,7 @@ contains
     subroutine test_cmnum()
         character(len=80) :: card
         integer :: ival, lblank, ierr, iecol
-        ! F10.2 without a point: the last two digits are decimals (SPEC 5)
+        ! F10.2 without a point: the last two digits are decimals (docs/CARDS.md)
         call field('      1250', 2, 1250, 0, 0)
         call field('     12.50', 2, 1250, 0, 0)
         call field('12.5      ', 2, 1250, 0, 0)
@@ -111,4 +111,4 @@ contains
         close(u, status='delete')
     end subroutine test_card_reader
 
-end program test_main
+end program test_legacy_monitor

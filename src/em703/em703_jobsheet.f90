@@ -1,13 +1,13 @@
-!> The job sheet TENZOR writes beside the tapes of a package (SPEC section 4):
+!> The job sheet TENZOR writes beside the tapes of a package (docs/FILES.md):
 !> `key = value` lines, `#` comment lines. The em703 tools read the name, the
 !> code, the scale, the start point and, for each tape T in small, large,
 !> cond, its file `T.tape` (relative to the job sheet's directory) and its
 !> tool `T.tool_mm`. Other keys are ignored.
 module em703_jobsheet
     use, intrinsic :: iso_fortran_env, only: int64
-    use em703_error, only: error_t, new_error, AT_LINE
-    use em703_io, only: read_text, dir_of
-    use em703_text, only: parse_int, parse_mm
+    use base_error, only: error_t, new_error, AT_LINE
+    use base_io, only: read_text, dir_of
+    use base_text, only: parse_int, parse_mm
     implicit none
     private
     public :: job_t, layer_t, read_job, parse_scale, machine_scale, LAYER_KEYS, NLAYERS
@@ -181,7 +181,7 @@ contains
         end if
     end subroutine parse_scale
 
-    !> True for the scales the machine has (SPEC section 1): 1:100, 1:10, 1:5,
+    !> True for the scales the machine has (the report's description of it): 1:100, 1:10, 1:5,
     !> 1:2, 1:1, 2:1, 5:1, 50:1, 100:1 (10:1 is not in the report's list).
     logical function machine_scale(num, den)
         integer, intent(in) :: num, den

@@ -1,11 +1,11 @@
-!> The error of the em703 tools: which file, where in it (a tape row, a text
+!> The error of the modern tools: which file, where in it (a tape row, a text
 !> line and column, or nowhere in particular) and what was expected.
 !>
 !> A routine that can fail has an argument `type(error_t), allocatable,
 !> intent(out) :: err`; it is allocated only when the routine failed (the
 !> convention of fpm's error type). `error_text` turns it into the one line
 !> the command prints on standard error: `FILE: row N: message`.
-module em703_error
+module base_error
     implicit none
     private
     public :: error_t, new_error, error_text, set_file
@@ -70,4 +70,4 @@ contains
         if (allocated(err%message)) text = text // err%message
     end function error_text
 
-end module em703_error
+end module base_error

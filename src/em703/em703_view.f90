@@ -7,7 +7,7 @@ module em703_view
     use em703_codec, only: DIGITS_8, DIGITS_K, ROW_GM, ROW_MINUS, ROW_X, ROW_Y, ROW_DX, &
                            ROW_DY, ROW_CYC, ROW_K, ROW_KK
     use em703_punch, only: iso_meaning, eia_meaning, holes
-    use em703_text, only: text_t, str, octal
+    use base_text, only: text_t, str, octal
     implicit none
     private
     public :: view_tape, guess_code

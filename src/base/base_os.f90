@@ -1,7 +1,7 @@
 !> The few operating-system services Fortran lacks: make a directory, rename a
 !> file atomically, remove a file, read a file descriptor to its end byte for
 !> byte. Thin bindings to the C library.
-module em703_os
+module base_os
     use, intrinsic :: iso_c_binding, only: c_int, c_char, c_null_char, c_size_t, c_long
     implicit none
     private
@@ -108,4 +108,4 @@ contains
         rc = c_remove(path // c_null_char)
     end subroutine remove_file
 
-end module em703_os
+end module base_os

@@ -9,7 +9,7 @@
 module em703_svg
     use, intrinsic :: iso_fortran_env, only: int64, real64
     use em703_sim, only: run_t, seg_t, SEG_LINE, SEG_TRAVEL, SEG_ARC, SEG_DOT, PI, TWO_PI
-    use em703_text, only: text_t, fixed, mm
+    use base_text, only: text_t, fixed, mm
     implicit none
     private
     public :: svg_run, svg_job

@@ -1,15 +1,15 @@
-!> File input and output of the em703 tools: a whole file as bytes or as text,
+!> File input and output of the modern tools: a whole file as bytes or as text,
 !> a file written under a temporary name and renamed when complete (so a
 !> failed run never leaves half a file), text to standard output. Every
 !> statement that can fail has iostat and iomsg; failures come back as an
 !> error_t naming the file.
-module em703_io
-    use, intrinsic :: iso_fortran_env, only: output_unit
-    use em703_error, only: error_t, new_error
-    use em703_os, only: rename_file, remove_file
+module base_io
+    use, intrinsic :: iso_fortran_env, only: output_unit, error_unit
+    use base_error, only: error_t, new_error
+    use base_os, only: rename_file, remove_file
     implicit none
     private
-    public :: read_bytes, read_text, write_bytes, write_text, print_text, dir_of
+    public :: read_bytes, read_text, write_bytes, write_text, print_text, dir_of, say
 
 contains
 
@@ -150,4 +150,11 @@ contains
         dir = path(1:k)
     end function dir_of
 
-end module em703_io
+    !> One line on standard error (the programs' messages).
+    subroutine say(line)
+        character(len=*), intent(in) :: line
+        integer :: ios
+        write(error_unit, '(a)', iostat=ios) line
+    end subroutine say
+
+end module base_io

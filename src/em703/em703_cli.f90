@@ -1,0 +1,432 @@
+!> The command line of em703: one parser for every subcommand, the help
+!> texts, and the usage errors. parse_command_line reads the arguments into a
+!> cli_t (or prints the help and stops with status 0, or names the mistake on
+!> standard error and stops with status 2); app/em703.f90 then hands the
+!> cli_t to the subcommand's function in em703_commands.
+!>
+!> Every subcommand reads its arguments the same way, left to right: -h or
+!> --help prints its help; an option it takes (OPTIONS below) reads its value
+!> from the next argument; anything else is its one file (for split: DX or
+!> DY, which may be negative). The limits of the values are the library's
+!> own: the field of em703_sim, the largest number of em703_codec.
+module em703_cli
+    use, intrinsic :: iso_fortran_env, only: int64, real64, output_unit
+    use base_args, only: get_arg
+    use base_io, only: say
+    use base_text, only: str, parse_int, parse_mm, parse_real
+    use em703_codec, only: MAX_NUMBER
+    use em703_jobsheet, only: parse_scale, machine_scale
+    use em703_sim, only: FIELD_MM
+    implicit none
+    private
+    public :: cli_t, parse_command_line
+
+    !> What the command line asks for. Unused fields keep their defaults,
+    !> which are the subcommands' defaults.
+    type, public :: cli_t
+        character(len=:), allocatable :: command    !< list, sim, svg, gcode, gerber, punch, view, split
+        character(len=:), allocatable :: file       !< the one file argument
+        character(len=:), allocatable :: out        !< -o FILE ('' = the default)
+        !> --code: a tape code (list, sim: 8, K or auto; view: auto, em703, iso or
+        !> eia) or a punch code (iso or eia; '' = not given)
+        character(len=:), allocatable :: code
+        character(len=:), allocatable :: svg        !< sim --svg FILE ('' = none)
+        logical :: utf8 = .false.                   !< list --utf8
+        logical :: bare = .false.                   !< list --bare
+        logical :: use_z = .false.                  !< gcode --z
+        integer :: num = 1, den = 1                 !< sim --scale N:D
+        integer(int64) :: start_x = 0, start_y = 0  !< sim --start, 0.01 mm
+        integer(int64) :: tool = 50                 !< sim --tool, 0.01 mm
+        real(real64) :: chord_tol = 0               !< gcode --chords, mm (0: arcs stay arcs)
+        integer :: first = 1, last = huge(1)        !< view --rows FIRST:LAST
+        integer(int64) :: max_pulses = 9999         !< split --max
+        integer(int64) :: move(2) = 0               !< split DX DY, pulses
+    end type cli_t
+
+    !> The field of the machine in 0.01 mm (sim --start), the widest tool
+    !> sim --svg draws (20 mm).
+    integer(int64), parameter :: FIELD_UNITS = nint(FIELD_MM * 100, int64), MAX_TOOL = 2000
+
+    !> The options of each subcommand, besides -h and --help.
+    character(len=*), parameter :: SUBCOMMANDS(8) = [character(len=6) :: &
+        'list', 'sim', 'svg', 'gcode', 'gerber', 'punch', 'view', 'split']
+    character(len=*), parameter :: OPTIONS(8) = [character(len=40) :: &
+        '--utf8 --bare --code', &
+        '--scale --start --svg --tool --code', &
+        '-o --output', &
+        '-o --output --z --chords', &
+        '-o --output', &
+        '-o --output --code', &
+        '--code --rows', &
+        '--max']
+
+contains
+
+    !> Read the whole command line into cli; stops with status 0 after a
+    !> help text and with status 2 after a usage error.
+    subroutine parse_command_line(cli)
+        type(cli_t), intent(out) :: cli
+        character(len=:), allocatable :: arg
+        integer :: nargs, i, k, nmove
+
+        nargs = command_argument_count()
+        if (nargs == 0) call usage_error('', 'no subcommand')
+        cli%command = get_arg(1)
+        if (cli%command == '-h' .or. cli%command == '--help' .or. cli%command == 'help') then
+            call help('')
+            stop 0, quiet=.true.
+        end if
+        k = 0
+        do i = 1, size(SUBCOMMANDS)
+            if (SUBCOMMANDS(i) == cli%command) k = i
+        end do
+        if (k == 0) call usage_error('', 'unknown subcommand "' // cli%command // '"')
+        cli%file = ''
+        cli%out = ''
+        cli%svg = ''
+        cli%code = 'auto'
+        if (cli%command == 'punch') cli%code = ''
+        nmove = 0
+        i = 2
+        do while (i <= nargs)
+            arg = get_arg(i)
+            if (arg == '-h' .or. arg == '--help') then
+                call help(cli%command)
+                stop 0, quiet=.true.
+            else if (takes(OPTIONS(k), arg)) then
+                call take_option(cli, arg, i, nargs)
+            else if (cli%command == 'split') then
+                call take_move(cli, arg, nmove)
+            else
+                call take_file(cli%command, cli%file, arg)
+            end if
+            i = i + 1
+        end do
+
+        select case (cli%command)
+        case ('list', 'sim', 'view')
+            call need_file(cli%command, cli%file, 'TAPE')
+        case ('svg', 'gerber')
+            call need_file(cli%command, cli%file, 'JOB (a job sheet NAME.job)')
+        case ('gcode')
+            call need_file(cli%command, cli%file, 'TAPE or JOB')
+        case ('punch')
+            if (len(cli%code) == 0) call usage_error('punch', 'missing --code iso|eia')
+            call need_file('punch', cli%file, 'FILE (the text to punch)')
+        case ('split')
+            if (nmove /= 2) call usage_error('split', 'needs DX and DY, in pulses')
+        end select
+    end subroutine parse_command_line
+
+    !> True if arg is one of the blank-separated options.
+    logical function takes(options, arg)
+        character(len=*), intent(in) :: options, arg
+        takes = len(arg) > 0 .and. index(arg, ' ') == 0
+        if (takes) takes = index(' ' // trim(options) // ' ', ' ' // arg // ' ') > 0
+    end function takes
+
+    !> An option of cli%command and, from the next argument, its value.
+    subroutine take_option(cli, arg, i, nargs)
+        type(cli_t), intent(inout) :: cli
+        character(len=*), intent(in) :: arg
+        integer, intent(inout) :: i
+        integer, intent(in) :: nargs
+        character(len=:), allocatable :: sub, v
+        integer(int64) :: a, b
+        integer :: p
+        logical :: ok
+
+        sub = cli%command
+        select case (arg)
+        case ('--utf8')
+            cli%utf8 = .true.
+        case ('--bare')
+            cli%bare = .true.
+        case ('--z')
+            cli%use_z = .true.
+        case ('-o', '--output')
+            cli%out = option_value(sub, i, nargs)
+            if (sub == 'punch' .and. len(cli%out) == 0) call usage_error('punch', '-o needs a file name')
+        case ('--code')
+            v = option_value(sub, i, nargs)
+            select case (sub)
+            case ('punch')
+                select case (v)
+                case ('iso', 'ISO')
+                    cli%code = 'iso'
+                case ('eia', 'EIA')
+                    cli%code = 'eia'
+                case default
+                    call usage_error('punch', '--code takes iso or eia, not "' // v // '"')
+                end select
+            case ('view')
+                select case (v)
+                case ('auto', 'em703', 'iso', 'eia')
+                    cli%code = v
+                case default
+                    call usage_error('view', '--code takes auto, em703, iso or eia, not "' // v // '"')
+                end select
+            case default
+                select case (v)
+                case ('8', 'K', 'auto')
+                    cli%code = v
+                case ('k')
+                    cli%code = 'K'
+                case default
+                    call usage_error(sub, '--code takes 8, K or auto, not "' // v // '"')
+                end select
+            end select
+        case ('--scale')
+            v = option_value(sub, i, nargs)
+            call parse_scale(v, cli%num, cli%den, ok)
+            if (ok) ok = machine_scale(cli%num, cli%den)
+            if (.not. ok) call usage_error(sub, '--scale takes one of the machine''s ' // &
+                'scales 1:100 1:10 1:5 1:2 1:1 2:1 5:1 50:1 100:1, not "' // v // '"')
+        case ('--start')
+            v = option_value(sub, i, nargs)
+            p = index(v, ',')
+            ok = p > 0
+            if (ok) call parse_mm(v(1:p - 1), cli%start_x, ok)
+            if (ok) call parse_mm(v(p + 1:), cli%start_y, ok)
+            if (ok) ok = cli%start_x >= 0 .and. cli%start_x <= FIELD_UNITS .and. &
+                         cli%start_y >= 0 .and. cli%start_y <= FIELD_UNITS
+            if (.not. ok) call usage_error(sub, '--start takes X,Y in mm on the field ' // &
+                '(0 to ' // str(FIELD_UNITS / 100) // ', two decimals), not "' // v // '"')
+        case ('--svg')
+            cli%svg = option_value(sub, i, nargs)
+            if (len(cli%svg) == 0) call usage_error(sub, '--svg needs a file name')
+        case ('--tool')
+            v = option_value(sub, i, nargs)
+            call parse_mm(v, cli%tool, ok)
+            if (.not. ok .or. cli%tool <= 0 .or. cli%tool > MAX_TOOL) call usage_error(sub, &
+                '--tool takes the tool width in mm (0.01 to ' // str(MAX_TOOL / 100) // &
+                '.00), not "' // v // '"')
+        case ('--chords')
+            v = option_value(sub, i, nargs)
+            call parse_real(v, cli%chord_tol, ok)
+            if (.not. ok .or. cli%chord_tol < 0.001_real64 .or. cli%chord_tol > 100) &
+                call usage_error(sub, '--chords takes the tolerance in mm (0.001 to 100), not "' &
+                                 // v // '"')
+        case ('--rows')
+            v = option_value(sub, i, nargs)
+            p = index(v, ':')
+            ok = p > 1 .and. p < len(v)
+            if (ok) call parse_int(v(1:p - 1), a, ok)
+            if (ok) call parse_int(v(p + 1:), b, ok)
+            if (ok) ok = a >= 1 .and. b >= a .and. b < huge(cli%last)
+            if (.not. ok) call usage_error(sub, '--rows takes FIRST:LAST (row numbers ' // &
+                'from 1), not "' // v // '"')
+            cli%first = int(a)
+            cli%last = int(b)
+        case ('--max')
+            v = option_value(sub, i, nargs)
+            call parse_int(v, cli%max_pulses, ok)
+            if (.not. ok .or. cli%max_pulses < 1 .or. cli%max_pulses > MAX_NUMBER) &
+                call usage_error(sub, '--max takes the most pulses of one frame, 1 to ' // &
+                                 str(MAX_NUMBER) // ', not "' // v // '"')
+        end select
+    end subroutine take_option
+
+    !> The value of option i (the next argument), or a usage error.
+    function option_value(sub, i, nargs) result(v)
+        character(len=*), intent(in) :: sub
+        integer, intent(inout) :: i
+        integer, intent(in) :: nargs
+        character(len=:), allocatable :: v
+        if (i >= nargs) call usage_error(sub, 'option ' // get_arg(i) // ' needs a value')
+        i = i + 1
+        v = get_arg(i)
+    end function option_value
+
+    !> The one file argument of a subcommand.
+    subroutine take_file(sub, file, a)
+        character(len=*), intent(in) :: sub
+        character(len=:), allocatable, intent(inout) :: file
+        character(len=*), intent(in) :: a
+        if (len(a) > 1) then
+            if (a(1:1) == '-') call usage_error(sub, 'unknown option ' // a)
+        end if
+        if (len(a) == 0) call usage_error(sub, 'an empty file name')
+        if (len(file) > 0) call usage_error(sub, 'one file at a time: ' // file // ' and ' // a)
+        file = a
+    end subroutine take_file
+
+    subroutine need_file(sub, file, what)
+        character(len=*), intent(in) :: sub, file, what
+        if (len(file) == 0) call usage_error(sub, 'missing ' // what)
+    end subroutine need_file
+
+    !> DX, then DY, of split's move: whole numbers of pulses, negative allowed.
+    subroutine take_move(cli, a, n)
+        type(cli_t), intent(inout) :: cli
+        character(len=*), intent(in) :: a
+        integer, intent(inout) :: n
+        logical :: ok
+        if (n == 2) call usage_error('split', 'one move at a time: DX DY')
+        call parse_int(a, cli%move(n + 1), ok)
+        if (.not. ok .or. abs(cli%move(n + 1)) > MAX_NUMBER) call usage_error('split', &
+            'DX and DY are whole numbers of pulses (0.01 mm), at most ' // str(MAX_NUMBER) // &
+            ', not "' // a // '"')
+        n = n + 1
+    end subroutine take_move
+
+    !> One line on standard error, exit status 2.
+    subroutine usage_error(sub, text)
+        character(len=*), intent(in) :: sub, text
+        if (len(sub) > 0) then
+            call say('em703 ' // sub // ': ' // text // ' (see em703 ' // sub // ' --help)')
+        else
+            call say('em703: ' // text // ' (see em703 --help)')
+        end if
+        stop 2, quiet=.true.
+    end subroutine usage_error
+
+    subroutine help(sub)
+        character(len=*), intent(in) :: sub
+        select case (sub)
+        case ('split')
+            call put([character(len=78) :: &
+            'usage: em703 split [--max N] DX DY', &
+            '', &
+            'Prints, one "DX DY" pair a line, the frames of a straight move of DX, DY', &
+            'pulses (0.01 mm) split into as few frames of at most N pulses per axis as', &
+            'possible, every division point within one pulse of the line (seed 004:', &
+            'frame k of n ends at the point k/n of the move, rounded, a half towards', &
+            'the start). The document''s example: em703 split --max 9999 98132 87647.', &
+            '', &
+            '  --max N   the most pulses of one frame (default 9999)', &
+            '', &
+            'Exit status: 0 done, 2 usage error.'])
+        case ('list')
+            call put([character(len=78) :: &
+            'usage: em703 list TAPE [--utf8] [--code 8|K|auto] [--bare]', &
+            '', &
+            'Decodes and checks an EM-703 tape image (.ptp, one row a byte) and prints', &
+            'a line "# code C, N rows, M frames", then GM, the frames one a line in the', &
+            'notation of the report (DX300 DY400 CYC8 K10 KK), GM.', &
+            '', &
+            '  --utf8           the report''s symbols: ΔX ΔY Ц К КК ГМ', &
+            '  --code 8|K|auto  the code variant (default auto: the first digit row', &
+            '                   that tells "8" from "K with control" decides)', &
+            '  --bare           the frame text only, as TENZOR writes it (NAME-*.txt)', &
+            '', &
+            'A bad tape: the frames before the error on standard output, then', &
+            '"TAPE: row N: what was found and expected" on standard error, exit 1.', &
+            'Exit status: 0 good tape, 1 bad tape, 2 usage or I/O error.'])
+        case ('sim')
+            call put([character(len=78) :: &
+            'usage: em703 sim TAPE [--scale N:D] [--start X,Y] [--svg FILE] [--tool MM]', &
+            '                      [--code 8|K|auto]', &
+            '', &
+            'Runs the tape on the simulated coordinatograph (tool raised at the start', &
+            'point; lines and travel at 5.5 m/min, arcs at 1.5 m/min) and prints', &
+            '"key = value" lines: code, frames, executed, rows, tape_m, drawn_mm,', &
+            'line_mm, arc_mm, travel_mm, minutes, end_x_mm, end_y_mm, tool_at_end,', &
+            'xmin_mm, xmax_mm, ymin_mm, ymax_mm (mm from the start point), scale,', &
+            'start_x_mm, start_y_mm, field (inside or left).', &
+            '', &
+            '  --scale N:D   machine scale: 1:100 1:10 1:5 1:2 1:1 2:1 5:1 50:1 100:1', &
+            '                (default 1:1)', &
+            '  --start X,Y   the start point on the 1200 x 1200 mm field, mm', &
+            '                (default 0,0; a job sheet says start_x_mm, start_y_mm)', &
+            '  --svg FILE    draw the run: strokes with the tool width, travel dashed', &
+            '  --tool MM     tool width for --svg (default 0.50)', &
+            '  --code        code variant, as for em703 list', &
+            '', &
+            'Exit status: 0 done, 1 a bad tape or the drawing leaves the field (the', &
+            'frame and its row on standard error), 2 usage or I/O error.'])
+        case ('svg')
+            call put([character(len=78) :: &
+            'usage: em703 svg JOB [-o FILE]', &
+            '', &
+            'Draws all tapes of a job sheet (NAME.job, beside its tapes) in one SVG:', &
+            'small pads red, large pads blue, conductors green, each with its tool,', &
+            'on a millimetre grid, coordinates in mm from the start point.', &
+            '', &
+            '  -o FILE   write the SVG to FILE (default: standard output)', &
+            '', &
+            'Exit status: 0 done, 1 a bad job sheet or tape, 2 usage or I/O error.'])
+        case ('gcode')
+            call put([character(len=78) :: &
+            'usage: em703 gcode TAPE|JOB [--chords TOL] [--z] [-o FILE]', &
+            '', &
+            'Translates a tape (or the three tapes of a job sheet NAME.job, each after', &
+            'a tool change T1..T3 M06) to an ISO 6983 program: %, N numbers, G21 G90,', &
+            'G00 travel, G01 lines (F5500), G02/G03 arcs with I J (F1500), the tool', &
+            'down and up as M03/M05, M02, %. Origin: the start point.', &
+            '', &
+            '  --chords TOL  arcs as chords for line-only machines, step angle', &
+            '                2 arccos(1 - TOL/R), never more than TOL mm off the arc', &
+            '  --z           tool down / up as Z moves (G01 Z0.000 / G00 Z1.000)', &
+            '  -o FILE       write the program to FILE (default: standard output)', &
+            '', &
+            'Exit status: 0 done, 1 a bad tape or job sheet, 2 usage or I/O error.'])
+        case ('gerber')
+            call put([character(len=78) :: &
+            'usage: em703 gerber JOB [-o FILE]', &
+            '', &
+            'Translates the three tapes of a job sheet (NAME.job) to one Gerber', &
+            'RS-274X image in mm: one circular aperture per tape (D10 small, D11', &
+            'large, D12 cond) of its tool width from the job sheet; D01 draws for', &
+            'the tool down, D03 flashes for dots, arcs in G75 with I J, D02 travel.', &
+            '', &
+            '  -o FILE   write the image to FILE (default: standard output)', &
+            '', &
+            'Exit status: 0 done, 1 a bad tape or job sheet, 2 usage or I/O error.'])
+        case ('punch')
+            call put([character(len=78) :: &
+            'usage: em703 punch --code iso|eia [-o TAPE] FILE', &
+            '', &
+            'Punches a text file (a G-code program, say) on 8-track tape, one byte a', &
+            'row: ISO 7-bit (ASCII, even parity on track 8, LF ends a block) or EIA', &
+            'RS-244 (odd parity on track 5, end of block on track 8 alone; letters', &
+            'of either case), with 20 blank rows of leader and trailer. CR is dropped.', &
+            '', &
+            '  --code iso|eia  the tape code (required)', &
+            '  -o TAPE         the tape image (default: FILE with .iso.ptp / .eia.ptp)', &
+            '', &
+            'A character outside the code: "FILE: line N, column C: ..." and exit 1.', &
+            'Exit status: 0 done, 1 the text cannot be punched, 2 usage or I/O error.'])
+        case ('view')
+            call put([character(len=78) :: &
+            'usage: em703 view TAPE [--code auto|em703|iso|eia] [--rows FIRST:LAST]', &
+            '', &
+            'Draws a tape image as punched tape, a row a line: row number, holes (o)', &
+            'and the feed hole (.), the row in octal, what it means. EM-703 tapes have', &
+            '5 tracks, ISO and EIA tapes 8 (auto: 5 tracks if every row fits, else', &
+            'ISO for even parity, EIA for odd).', &
+            '', &
+            '  --code      the tape code (default auto)', &
+            '  --rows A:B  only rows A to B', &
+            '', &
+            'Exit status: 0 done, 1 not a tape of that code, 2 usage or I/O error.'])
+        case default
+            call put([character(len=78) :: &
+            'usage: em703 SUBCOMMAND [ARGS] (em703 SUBCOMMAND --help for each)', &
+            '', &
+            'The modern tools of the EM-703 tape subsystem (JINR P11-10356, 1977):', &
+            '', &
+            '  list TAPE [--utf8]                   decode and check a tape', &
+            '  sim TAPE [--scale N:D] [--start X,Y] [--svg FILE]', &
+            '                                       run it on the coordinatograph', &
+            '  svg JOB [-o FILE]                    draw the tapes of a job sheet', &
+            '  gcode TAPE|JOB [--chords TOL] [--z] [-o FILE]', &
+            '                                       ISO 6983 G-code', &
+            '  gerber JOB [-o FILE]                 Gerber RS-274X', &
+            '  punch --code iso|eia [-o TAPE] FILE  punch text on ISO or EIA tape', &
+            '  view TAPE                            a picture of a punched tape', &
+            '  split [--max N] DX DY                a long move split into frames', &
+            '', &
+            'Exit status: 0 done, 1 the input had errors, 2 usage or I/O error.'])
+        end select
+    end subroutine help
+
+    subroutine put(lines)
+        character(len=*), intent(in) :: lines(:)
+        integer :: i, ios
+        do i = 1, size(lines)
+            write(output_unit, '(a)', iostat=ios) trim(lines(i))
+        end do
+    end subroutine put
+
+end module em703_cli
