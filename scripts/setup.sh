@@ -37,3 +37,14 @@ if [ ! -x .venv/bin/python ] || [ "$(cat "$stamp" 2>/dev/null)" != "$want" ]; th
         --no-deps --no-build-isolation --editable .
     echo "$want" > "$stamp"
 fi
+
+# fpm adds each object to its static library and never takes one out: after a
+# Fortran file is moved or renamed, the old object stays in the archive and
+# the link fails with "multiple definition". When the list of Fortran files
+# differs from the one the build was made from, the build starts afresh.
+sources=$(find legacy src app test -name '*.f' -o -name '*.f90' | LC_ALL=C sort | sha256sum | cut -d' ' -f1)
+if [ -d build ] && [ "$(cat build/.sources.sha256 2>/dev/null)" != "$sources" ]; then
+    echo "setup: the Fortran files changed: rebuilding from scratch"
+    rm -rf build
+fi
+mkdir -p build && echo "$sources" > build/.sources.sha256
