@@ -60,15 +60,18 @@ def _add_decode(sub: argparse._SubParsersAction) -> None:
 
 
 def _run_f77check(args: argparse.Namespace) -> int:
-    return f77check.main(args.dir)
+    return f77check.main(args.dir, write_common=args.write_common)
 
 
 def _add_f77check(sub: argparse._SubParsersAction) -> None:
-    p = sub.add_parser("f77check", help="check FORTRAN 77 sources (SPEC section 7)",
-                       description="Check every *.f file under DIR against the "
-                                   "rules of SPEC section 7.")
+    p = sub.add_parser("f77check", help="check the FORTRAN 77 sources (legacy/README.md)",
+                       description="Check every *.f file under DIR against the FORTRAN 77 "
+                                   "rules of legacy/README.md, and every COMMON copy "
+                                   "against DIR/COMMON.inc.")
     p.add_argument("dir", nargs="?", default="legacy", metavar="DIR",
                    help="directory to check (default: legacy)")
+    p.add_argument("--write-common", action="store_true",
+                   help="first write every COMMON copy from DIR/COMMON.inc")
     p.set_defaults(func=_run_f77check)
 
 

@@ -1,8 +1,15 @@
-"""FORTRAN 77 style checker for ``legacy/`` (SPEC section 7, STYLE.md).
+"""FORTRAN 77 checker for ``legacy/`` (the rules: legacy/README.md).
 
 Checks every ``*.f`` file under a directory (hidden and ``build``
 directories are skipped) against the rules in ``RULES``; each message names
 its rule.  Use ``check_dir(path)`` or ``python -m harness f77check [DIR]``.
+
+FORTRAN 77 has no INCLUDE, so every routine carries its own copy of the
+COMMON blocks it uses.  When the directory holds a master text
+(``COMMON.inc``: each block under a ``C     ---- /NAME/ ...`` line, as the
+FORTRAN statements themselves), every copy must be that text line for line
+(``F77-COMMON``), and ``--write-common`` writes the copies from it.  Without
+a master, copies of a block are compared with each other by their variables.
 
 The reader follows fixed form (ANSI X3.9-1978, section 3): a line with C or *
 in column 1 is a comment; columns 1-5 hold a label, column 6 a continuation
@@ -54,8 +61,10 @@ RULES: dict[str, str] = {
     "F77-IMPLICIT": "every program unit has IMPLICIT NONE and no other IMPLICIT",
     "F77-UNIT": "one named program unit per file, ending in END, in a file "
                 "named after it in lower case (MTFILL in mtfill.f)",
-    "F77-COMMON": "a named COMMON block is declared identically (variables, "
-                  "types, dimensions) in every unit that uses it",
+    "F77-COMMON": "a named COMMON block is declared identically in every unit "
+                  "that uses it: a copy of its master text in COMMON.inc, line "
+                  "for line (without a master: the same variables, types and "
+                  "dimensions)",
     "F77-BLKCOM": "no blank COMMON",
     "F77-PARAM": "a PARAMETER constant has the same type and value in every unit",
     "F77-DECL": "every variable is declared (gfortran: 'has no IMPLICIT type')",
@@ -690,20 +699,22 @@ def _signature(unit: _Unit, block: str) -> list[str]:
             for v in unit.commons[block][2]]
 
 
-def _cross_checks(results: list[_FileResult]) -> list[Violation]:
+def _cross_checks(results: list[_FileResult], commons: bool = True) -> list[Violation]:
+    """PARAMETERs (and, with ``commons``, the COMMON blocks) of all files
+    compared with the first file that has them."""
     out: list[Violation] = []
-    commons: dict[str, tuple[str, int, list[str]]] = {}
+    seen: dict[str, tuple[str, int, list[str]]] = {}
     params: dict[str, tuple[str, int, str, str]] = {}
     for res in results:
         for unit in res.units:
             for block, (line, col, _vars) in unit.commons.items():
-                if not block:
+                if not block or not commons:
                     continue
                 sig = _signature(unit, block)
-                if block not in commons:
-                    commons[block] = (res.display, line, sig)
+                if block not in seen:
+                    seen[block] = (res.display, line, sig)
                     continue
-                where, ref_line, ref = commons[block]
+                where, ref_line, ref = seen[block]
                 if sig != ref:
                     i = next((k for k, (p, q) in enumerate(zip(sig, ref)) if p != q),
                              None)
@@ -764,6 +775,112 @@ def _gfortran(path: Path, display: str, exe: str) -> list[Violation]:
 
 
 # ---------------------------------------------------------------------------
+# The master text of the COMMON blocks.
+# ---------------------------------------------------------------------------
+MASTER = "COMMON.inc"
+_HEAD = re.compile(r"^C     ---- /([A-Z][A-Z0-9]*)/")
+_DECL = re.compile(r"^      (INTEGER|REAL|DOUBLE ?PRECISION|CHARACTER|LOGICAL|PARAMETER|"
+                   r"COMMON|SAVE|EQUIVALENCE)\b")
+_COMMON_STMT = re.compile(r"^      COMMON */([A-Z][A-Z0-9]*)/")
+
+
+def common_copies(lines: list[str]) -> list[tuple[str, int, int]]:
+    """The COMMON copies of a file: (block of the header line, first line,
+    last line), 0-based and inclusive.  A copy is a ``C     ---- /NAME/``
+    line and the declarations that follow it (comment lines between them
+    included), up to the next ``C     ----`` line, a ``C`` line alone or
+    the first other statement."""
+    out: list[tuple[str, int, int]] = []
+    i = 0
+    while i < len(lines):
+        m = _HEAD.match(lines[i])
+        if not m:
+            i += 1
+            continue
+        j = end = i
+        j += 1
+        while j < len(lines):
+            line = lines[j]
+            if line.startswith("C     ----") or line.rstrip() == "C":
+                break
+            if line[:1] in "Cc*":
+                j += 1
+                continue
+            if len(line) > 5 and line[:5].strip() == "" and line[5] not in " 0":
+                end = j                                   # a continuation line
+            elif _DECL.match(line):
+                end = j
+            else:
+                break
+            j += 1
+        out.append((m.group(1), i, end))
+        i = end + 1
+    return out
+
+
+def read_master(path: Path) -> dict[str, list[str]]:
+    """The sections of a master text: block of the header line -> its lines
+    (the header, the declarations; trailing comment lines dropped)."""
+    lines = path.read_text(encoding="ascii").splitlines()
+    return {name: lines[a:b + 1] for name, a, b in common_copies(lines)}
+
+
+def _blocks_of(section: list[str]) -> set[str]:
+    """The COMMON blocks a section declares (/TZPKG/ and /TZPKGC/, say)."""
+    return {m.group(1) for line in section for m in [_COMMON_STMT.match(line)] if m}
+
+
+def master_checks(paths: Iterable[Path], master: dict[str, list[str]],
+                  master_name: str = MASTER) -> list[Violation]:
+    """Every copy is its master section line for line; every COMMON
+    statement is inside a copy of the section that declares its block."""
+    owner = {b: name for name, sec in master.items() for b in _blocks_of(sec)}
+    out: list[Violation] = []
+    for path in paths:
+        lines = path.read_text(encoding="ascii", errors="replace").splitlines()
+        inside: set[int] = set()
+        for name, a, b in common_copies(lines):
+            inside.update(range(a, b + 1))
+            want = master.get(name)
+            if want is None:
+                out.append(Violation(str(path), a + 1, 1, "F77-COMMON",
+                                     f"COMMON /{name}/ has no master text in {master_name}"))
+                continue
+            got = lines[a:b + 1]
+            if got != want:
+                k = next((k for k, (p, q) in enumerate(zip(got, want)) if p != q),
+                         min(len(got), len(want)))
+                expect = want[k].strip() if k < len(want) else "the end of the copy"
+                out.append(Violation(str(path), a + k + 1, 1, "F77-COMMON",
+                                     f"copy of /{name}/ differs from {master_name} "
+                                     f"(line {k + 1} of the section): expected {expect!r}"))
+        for n, line in enumerate(lines):
+            m = _COMMON_STMT.match(line)
+            if m and n not in inside:
+                where = f"/{owner[m.group(1)]}/" if m.group(1) in owner else "no section"
+                out.append(Violation(str(path), n + 1, 7, "F77-COMMON",
+                                     f"COMMON /{m.group(1)}/ outside a copy of its master "
+                                     f"text ({where} of {master_name})"))
+    return out
+
+
+def write_copies(paths: Iterable[Path], master: dict[str, list[str]]) -> list[Path]:
+    """Rewrite every copy from the master text; the files that changed."""
+    changed = []
+    for path in paths:
+        text = path.read_text(encoding="ascii")
+        lines = text.splitlines()
+        for name, a, b in reversed(common_copies(lines)):
+            if name in master:
+                lines[a:b + 1] = master[name]
+        new = "\n".join(lines) + "\n"
+        if new != text:
+            path.write_text(new, encoding="ascii")
+            changed.append(path)
+    return changed
+
+
+# ---------------------------------------------------------------------------
 # Entry points.
 # ---------------------------------------------------------------------------
 def find_sources(root: str | os.PathLike[str]) -> list[Path]:
@@ -778,12 +895,18 @@ def find_sources(root: str | os.PathLike[str]) -> list[Path]:
 
 
 def check_files(paths: Iterable[Path], compiler: str | None = "gfortran",
-                notes: list[str] | None = None) -> list[Violation]:
-    """Check the given files (names as given are used in messages)."""
+                notes: list[str] | None = None,
+                master: Path | None = None) -> list[Violation]:
+    """Check the given files (names as given are used in messages); with a
+    master COMMON text, every copy against it."""
     paths = list(paths)
     results = [_FileChecker(p, str(p)).run() for p in paths]
     violations = [v for r in results for v in r.violations]
-    violations += _cross_checks(results)
+    if master is not None:
+        violations += master_checks(paths, read_master(master), str(master))
+        violations += _cross_checks(results, commons=False)
+    else:
+        violations += _cross_checks(results)
     if compiler:
         exe = shutil.which(compiler)
         if exe is None:
@@ -802,13 +925,18 @@ def check_dir(path: str | os.PathLike[str] = "legacy",
     """Check every ``*.f`` under ``path``; returns the violations, sorted.
 
     ``compiler`` runs the F77-DECL step (None skips it); if it is not on PATH
-    the step is skipped and a line saying so is appended to ``notes``.
+    the step is skipped and a line saying so is appended to ``notes``.  The
+    copies of COMMON blocks are checked against ``path/COMMON.inc`` when
+    it exists.
     """
-    return check_files(find_sources(path), compiler, notes)
+    master = Path(path) / MASTER
+    return check_files(find_sources(path), compiler, notes,
+                       master if master.is_file() else None)
 
 
-def main(directory: str = "legacy") -> int:
-    """CLI: print violations and a summary; 0 clean, 1 violations, 2 no input."""
+def main(directory: str = "legacy", write_common: bool = False) -> int:
+    """CLI: print violations and a summary; 0 clean, 1 violations, 2 no input.
+    With ``write_common``, first rewrite the COMMON copies from the master."""
     root = Path(directory)
     if not root.is_dir():
         print(f"f77check: {directory}: not a directory", file=sys.stderr)
@@ -817,8 +945,17 @@ def main(directory: str = "legacy") -> int:
     if not files:
         print(f"f77check: no *.f files under {directory}", file=sys.stderr)
         return 2
+    master = root / MASTER
+    if write_common:
+        if not master.is_file():
+            print(f"f77check: {master}: no master COMMON text to write from",
+                  file=sys.stderr)
+            return 2
+        for path in write_copies(files, read_master(master)):
+            print(f"f77check: wrote the COMMON copies of {path}")
     notes: list[str] = []
-    violations = check_files(files, notes=notes)
+    violations = check_files(files, notes=notes,
+                             master=master if master.is_file() else None)
     for v in violations:
         print(v)
     for note in notes:

@@ -13,7 +13,7 @@ from pathlib import Path
 import pytest
 
 from harness.__main__ import main
-from harness.f77check import RULES, Violation, check_dir
+from harness.f77check import RULES, Violation, check_dir, read_master
 
 HAVE_GFORTRAN = shutil.which("gfortran") is not None
 needs_gfortran = pytest.mark.skipif(not HAVE_GFORTRAN, reason="gfortran not on PATH")
@@ -452,3 +452,73 @@ def test_every_rule_is_tested() -> None:
     source = Path(__file__).read_text(encoding="utf-8")
     asserted = set(re.findall(r'"(F77-[A-Z0-9]+)"', source))
     assert asserted == set(RULES), sorted(set(RULES) ^ asserted)
+
+
+# ---------------------------------------------------------------------------
+# The master COMMON text: every copy is it, line for line.
+# ---------------------------------------------------------------------------
+MASTER_TEXT = ["C     THE MASTER TEXT",
+               "C     ---- /CMPAD/ THE PADS ------------------------------------------",
+               "      INTEGER MXPAD",
+               "      PARAMETER (MXPAD = 500)",
+               "      INTEGER NPAD, IPX(MXPAD)",
+               "      COMMON /CMPAD/ NPAD, IPX",
+               "C"]
+COPY = MASTER_TEXT[1:6]
+
+
+def master_tree(directory: Path, copy: list[str]) -> Path:
+    write(directory, "COMMON.inc", MASTER_TEXT)
+    return write(directory, "cmuse.f", subroutine("CMUSE", [*copy, "      NPAD = 0"]))
+
+
+def test_copies_equal_to_the_master_pass(tmp_path: Path) -> None:
+    master_tree(tmp_path, COPY)
+    assert check_dir(tmp_path, compiler=None) == []
+
+
+@pytest.mark.parametrize("k, changed", [
+    (1, "      INTEGER  MXPAD"),                     # one blank more: same meaning, other text
+    (2, "      PARAMETER (MXPAD = 400)"),
+    (4, "      COMMON /CMPAD/ NPAD, IPX, IPY"),
+])
+def test_a_copy_differing_from_the_master_is_caught(tmp_path: Path, k: int, changed: str) -> None:
+    copy = list(COPY)
+    copy[k] = changed
+    master_tree(tmp_path, copy)
+    found = only(tmp_path, "F77-COMMON")
+    assert any(f"differs from {tmp_path / 'COMMON.inc'} (line {k + 1} of the section)"
+               in v.message and v.line == 6 + k for v in found), found
+
+
+def test_a_block_without_master_and_a_common_outside_a_copy_are_caught(tmp_path: Path) -> None:
+    write(tmp_path, "COMMON.inc", MASTER_TEXT)
+    write(tmp_path, "cmone.f", subroutine("CMONE", [
+        "C     ---- /CMNEW/ NOT IN THE MASTER ----------------------------------",
+        "      INTEGER NNEW", "      COMMON /CMNEW/ NNEW", "      NNEW = 0"]))
+    write(tmp_path, "cmtwo.f", subroutine("CMTWO", [
+        "      INTEGER NPAD, IPX(500)", "      COMMON /CMPAD/ NPAD, IPX", "      NPAD = 0"]))
+    messages = sorted(v.message for v in only(tmp_path, "F77-COMMON"))
+    assert any("COMMON /CMNEW/ has no master text" in m for m in messages), messages
+    assert any("COMMON /CMPAD/ outside a copy of its master text (/CMPAD/ of" in m
+               for m in messages), messages
+
+
+def test_write_common_writes_the_copies_from_the_master(tmp_path: Path, capsys) -> None:
+    copy = list(COPY)
+    copy[2] = "      PARAMETER (MXPAD = 400)"
+    path = master_tree(tmp_path, copy)
+    assert main(["f77check", str(tmp_path)]) == 1
+    assert main(["f77check", "--write-common", str(tmp_path)]) == 0
+    assert "      PARAMETER (MXPAD = 500)" in path.read_text().splitlines()
+    assert "wrote the COMMON copies of" in capsys.readouterr().out
+
+
+def test_legacy_has_a_master_for_every_block_it_uses() -> None:
+    legacy = Path(__file__).resolve().parents[3] / "legacy"
+    master = read_master(legacy / "COMMON.inc")
+    used = {m for p in legacy.glob("*.f")
+            for m in re.findall(r"^      COMMON */([A-Z0-9]+)/", p.read_text(), re.M)}
+    declared = {b for sec in master.values()
+                for b in re.findall(r"^      COMMON */([A-Z0-9]+)/", "\n".join(sec), re.M)}
+    assert used == declared, used ^ declared
