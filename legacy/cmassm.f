@@ -9,10 +9,15 @@ C              POINT; EACH ITEM IS REACHED BY A MOVE WITH THE TOOL
 C              RAISED (K 20) AND DRAWN FORWARD OR BACKWARD. LAST, LONG
 C              MOVES ARE SPLIT TO THE P CARD'S FRAME LIMIT (CMSPLT) AND
 C              RUNS OF EQUAL FRAME PAIRS ARE FOLDED INTO CYCLES.
+C     BODY    (INPUT)  SUBROUTINE BODY(I, IEXP, IEYP) OF THE PROGRAM
+C                      THAT PUNCHES THE TAPE (MTITEM OR MLITEM):
+C                      APPENDS THE FRAMES OF ITEM I, RETURNS ITS ENTRY
+C                      POINT (IEXP, IEYP)
 C     CHANGES: 2026-11-22 FIRST RECONSTRUCTION
 C=======================================================================
-      SUBROUTINE CMASSM
+      SUBROUTINE CMASSM(BODY)
       IMPLICIT NONE
+      EXTERNAL BODY
 C     ---- /TZPKG/ THE PACKAGE: P CARD PARAMETERS, ITS CARD IMAGES ---
       INTEGER MXCRD
       PARAMETER (MXCRD = 200000)
@@ -56,7 +61,7 @@ C     MXSTK) IS REPORTED HERE, ONCE, AND THE TAPE IS NOT BUILT FURTHER
 C     ------------------------------------------------------------------
       NE0 = NPERR
       DO 10 I = 1, NITM
-         CALL CMBODY(I, IEX(I), IEY(I))
+         CALL BODY(I, IEX(I), IEY(I))
          CALL CMDISP(NM + 1, NFR, DX, DY)
          IXX(I) = IEX(I) + NINT(DX)
          IXY(I) = IEY(I) + NINT(DY)
@@ -93,7 +98,7 @@ C     ---- THE FRAMES --------------------------------------------------
             CALL CMFADD(0, 0, IEX1 - ICX, IEY1 - ICY, 0, 20, ICRD, ICOL)
          END IF
          I1 = NFR + 1
-         CALL CMBODY(I, IDUM1, IDUM2)
+         CALL BODY(I, IDUM1, IDUM2)
 C        AN ITEM THAT ENDS WHERE IT STARTS (A CIRCLE) IS ALWAYS DRAWN
 C        FORWARD: A CIRCLE KEEPS THE DIRECTION OF ITS CARD
          IF (IORI(I) .EQ. 1 .AND. (IEX1 .NE. IXE .OR. IEY1 .NE. IYE))

@@ -52,7 +52,7 @@ C     ---- LOCAL -------------------------------------------------------
      2        IX6, IY6
       DOUBLE PRECISION DIST
       INTEGER JX1, JY1, JX2, JY2
-C     THE DISTANCE OF TWO POINTS, AS CMDST, BUT IN LINE
+C     THE DISTANCE OF TWO POINTS: A STATEMENT FUNCTION, NO CALL
       DIST(JX1, JY1, JX2, JY2) = SQRT((DBLE(JX1) - JX2)**2 +
      1   (DBLE(JY1) - JY2)**2)
 C

@@ -32,6 +32,7 @@ C     ---- /CMITM/ THE ITEMS OF A TAPE AND THE TOUR THROUGH THEM -------
       COMMON /CMITM/ NITM, IKND, IREF, IEX, IEY, IXX, IXY, ITOUR, IPOS,
      1               IORI
 C     ---- LOCAL -------------------------------------------------------
+      EXTERNAL MLITEM
       INTEGER I
 C
       NITM = 0
@@ -45,7 +46,7 @@ C
          IKND(NITM) = 4
          IREF(NITM) = I
    20 CONTINUE
-      CALL CMASSM
+      CALL CMASSM(MLITEM)
       RETURN
 C     END OF MLCOND
       END

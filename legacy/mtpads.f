@@ -46,6 +46,7 @@ C     ---- /CMITM/ THE ITEMS OF A TAPE AND THE TOUR THROUGH THEM -------
       COMMON /CMITM/ NITM, IKND, IREF, IEX, IEY, IXX, IXY, ITOUR, IPOS,
      1               IORI
 C     ---- LOCAL -------------------------------------------------------
+      EXTERNAL MTITEM
       INTEGER I, IC
 C
       NITM = 0
@@ -58,7 +59,7 @@ C
             IREF(NITM) = I
          END IF
    10 CONTINUE
-      CALL CMASSM
+      CALL CMASSM(MTITEM)
       RETURN
 C     END OF MTPADS
       END

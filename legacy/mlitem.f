@@ -1,15 +1,18 @@
 C=======================================================================
-C     CMBODY - APPEND THE FRAMES OF ONE ITEM, AS DRAWN FORWARD  (SHARED)
-C     SOURCE:  RECONSTRUCTED. AN ITEM IS WHAT THE TOUR VISITS AS ONE:
-C              A PAD OR A ROW OF PADS (M703T), A CONDUCTOR, A CIRCLE OR
-C              AN ARC (M703L). ITS BODY STARTS AT ITS ENTRY POINT; THE
-C              MOVE THERE IS NOT PART OF IT.
+C     MLITEM - APPEND THE FRAMES OF ONE ITEM OF THE CONDUCTOR TAPE
+C                                                              (M703L)
+C     SOURCE:  RECONSTRUCTED. AN ITEM OF THE CONDUCTOR TAPE IS A
+C              CONDUCTOR (MLBODY DRAWS IT), OR A CIRCLE OR AN ARC (ONE
+C              FRAME). CMASSM, SHARED BY BOTH PROGRAMS, IS GIVEN THIS
+C              ROUTINE BY MLCOND AND CALLS IT FOR EACH ITEM. ITS BODY
+C              STARTS AT ITS ENTRY POINT; THE MOVE THERE IS NOT PART
+C              OF IT.
 C     I       (INPUT)  INTEGER  THE ITEM IN /CMITM/
 C     IEXP    (OUTPUT) INTEGER  THE ENTRY POINT, X, 0.01 MM
 C     IEYP    (OUTPUT) INTEGER  THE ENTRY POINT, Y
-C     CHANGES: 2026-11-22 FIRST RECONSTRUCTION
+C     CHANGES: SEE THE HISTORY OF THE REPOSITORY
 C=======================================================================
-      SUBROUTINE CMBODY(I, IEXP, IEYP)
+      SUBROUTINE MLITEM(I, IEXP, IEYP)
       IMPLICIT NONE
       INTEGER I, IEXP, IEYP
 C     ---- /TZGEO/ THE BOARD: PADS, CONDUCTORS, CIRCLES AND ARCS -------
@@ -39,9 +42,7 @@ C     ---- LOCAL -------------------------------------------------------
       INTEGER J
 C
       J = IREF(I)
-      IF (IKND(I) .LE. 2) THEN
-         CALL MTBODY(J, IKND(I), IEXP, IEYP)
-      ELSE IF (IKND(I) .EQ. 3) THEN
+      IF (IKND(I) .EQ. 3) THEN
          CALL MLBODY(J, IEXP, IEYP)
       ELSE
 C        A CIRCLE OR AN ARC IS ONE FRAME
@@ -51,5 +52,5 @@ C        A CIRCLE OR AN ARC IS ONE FRAME
      1               KACRD(J), 11)
       END IF
       RETURN
-C     END OF CMBODY
+C     END OF MLITEM
       END
