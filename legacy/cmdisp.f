@@ -4,7 +4,7 @@ C     SOURCE:  REPORT, "SOSTAV KADRA" (TS REPEATS TWO FRAMES).
 C     I1, I2  (INPUT)  INTEGER           THE FRAMES I1..I2 OF /CMFRT/
 C     DX, DY  (OUTPUT) DOUBLE PRECISION  THE SUM OF THEIR MOVES, CYCLES
 C                                        COUNTED, 0.01 MM
-C     CHANGES: 2026-11-22 FIRST RECONSTRUCTION
+C     CHANGES: SEE THE HISTORY OF THE REPOSITORY (GIT LOG)
 C=======================================================================
       SUBROUTINE CMDISP(I1, I2, DX, DY)
       IMPLICIT NONE

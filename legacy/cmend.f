@@ -6,7 +6,7 @@ C     IP      (INPUT)  INTEGER  THE PLACE, 0..NITM+1
 C     IWHICH  (INPUT)  INTEGER  1 = THE END THE TOOL LEAVES IT BY,
 C                               2 = THE END THE TOOL ENTERS IT BY
 C     IX, IY  (OUTPUT) INTEGER  THE POINT, 0.01 MM
-C     CHANGES: 2026-11-22 FIRST RECONSTRUCTION
+C     CHANGES: SEE THE HISTORY OF THE REPOSITORY (GIT LOG)
 C=======================================================================
       SUBROUTINE CMEND(IP, IWHICH, IX, IY)
       IMPLICIT NONE

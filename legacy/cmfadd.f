@@ -9,7 +9,7 @@ C     K       (INPUT)  INTEGER  10, 20, 11 OR 13
 C     ICRD    (INPUT)  INTEGER  THE CARD THAT ASKED FOR THE FRAME, 0 IF
 C                               NONE (THE RETURN TO THE START POINT)
 C     ICOL    (INPUT)  INTEGER  THE COLUMN TO POINT AT IN A MESSAGE
-C     CHANGES: 2026-11-22 FIRST RECONSTRUCTION
+C     CHANGES: SEE THE HISTORY OF THE REPOSITORY (GIT LOG)
 C=======================================================================
       SUBROUTINE CMFADD(IX, IY, IDX, IDY, ICYC, K, ICRD, ICOL)
       IMPLICIT NONE
@@ -22,11 +22,17 @@ C     ---- /CMFRT/ THE FRAMES OF THE TAPE BEING PUNCHED ----------------
      2        JFCOL(MXFRM)
       COMMON /CMFRT/ NFR, LFULL, JFX, JFY, JFDX, JFDY, JFCYC, JFK,
      1               JFCRD, JFCOL
+C     ---- LOCAL -------------------------------------------------------
+      CHARACTER*12 SN
+      INTEGER LN
 C
       IF (NFR .GE. MXFRM) THEN
-         IF (LFULL .EQ. 0) CALL CMERR('TENZOR', ICRD, 1, 'CAPACITY '
-     1      // 'EXCEEDED: MORE THAN 1000000 FRAMES ON ONE TAPE '
-     2      // '(PARAMETER MXFRM); SPLIT THE BOARD INTO PACKAGES')
+         IF (LFULL .EQ. 0) THEN
+            CALL CMITOA(MXFRM, SN, LN)
+            CALL CMERR('TENZOR', ICRD, 1, 'CAPACITY EXCEEDED: MORE '
+     1         // 'THAN ' // SN(1:LN) // ' FRAMES ON ONE TAPE '
+     2         // '(PARAMETER MXFRM); SPLIT THE BOARD INTO PACKAGES')
+         END IF
          LFULL = 1
          RETURN
       END IF

@@ -2,7 +2,7 @@ C=======================================================================
 C     CMFCPY - COPY FRAME I OVER FRAME J                        (SHARED)
 C     SOURCE:  RECONSTRUCTED.
 C     I, J    (INPUT)  INTEGER  FRAMES OF /CMFRT/, J .LE. I
-C     CHANGES: 2026-11-22 FIRST RECONSTRUCTION
+C     CHANGES: SEE THE HISTORY OF THE REPOSITORY (GIT LOG)
 C=======================================================================
       SUBROUTINE CMFCPY(I, J)
       IMPLICIT NONE

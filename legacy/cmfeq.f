@@ -2,7 +2,7 @@ C=======================================================================
 C     CMFEQ  - ARE TWO FRAMES THE SAME, WITH NO CYCLE ON EITHER (SHARED)
 C     SOURCE:  RECONSTRUCTED.
 C     I, J    (INPUT)  INTEGER  FRAMES OF /CMFRT/
-C     CHANGES: 2026-11-22 FIRST RECONSTRUCTION
+C     CHANGES: SEE THE HISTORY OF THE REPOSITORY (GIT LOG)
 C=======================================================================
       LOGICAL FUNCTION CMFEQ(I, J)
       IMPLICIT NONE

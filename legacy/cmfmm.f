@@ -1,11 +1,11 @@
 C=======================================================================
 C     CMFMM  - HUNDREDTHS OF A MILLIMETRE AS TEXT 'NNN.NN'    (SHARED)
 C     SOURCE:  RECONSTRUCTED. EVERY LENGTH IS HELD AS AN INTEGER IN
-C              THE TAPE UNIT 0.01 MM (SPEC 1); THIS PRINTS ONE.
+C              THE TAPE UNIT 0.01 MM (THE REPORT); THIS PRINTS ONE.
 C     IVAL    (INPUT)  INTEGER    VALUE IN 0.01 MM
 C     STR     (OUTPUT) CHARACTER  E.G. '12.50', '-0.05', '0.00'
 C     LSTR    (OUTPUT) INTEGER    NUMBER OF CHARACTERS USED
-C     CHANGES: 2026-11-22 FIRST RECONSTRUCTION
+C     CHANGES: SEE THE HISTORY OF THE REPOSITORY (GIT LOG)
 C=======================================================================
       SUBROUTINE CMFMM(IVAL, STR, LSTR)
       IMPLICIT NONE

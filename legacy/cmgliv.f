@@ -2,7 +2,7 @@ C=======================================================================
 C     CMGLIV - LIST THE LIVE ENDS OF THE GRID IN KCEL(1..NLIVE) (SHARED)
 C     SOURCE:  RECONSTRUCTED.
 C     NLIVE   (OUTPUT) INTEGER  HOW MANY
-C     CHANGES: 2026-11-22 FIRST RECONSTRUCTION
+C     CHANGES: SEE THE HISTORY OF THE REPOSITORY (GIT LOG)
 C=======================================================================
       SUBROUTINE CMGLIV(NLIVE)
       IMPLICIT NONE

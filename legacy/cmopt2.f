@@ -18,7 +18,7 @@ C                               1 = ONLY THE ITEMS ALREADY QUEUED AND
 C                               THOSE THEIR MOVES QUEUE, 2-OPT AND
 C                               OR-OPT, TILL THE QUEUE IS EMPTY (CMKICK)
 C     THE LENGTH THE MOVES TAKE OFF THE TOUR IS ADDED TO DGAIN.
-C     CHANGES: 2026-11-22 FIRST RECONSTRUCTION
+C     CHANGES: SEE THE HISTORY OF THE REPOSITORY (GIT LOG)
 C=======================================================================
       SUBROUTINE CMOPT2(IMODE)
       IMPLICIT NONE

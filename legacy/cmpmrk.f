@@ -7,7 +7,7 @@ C     CW, CH  (INPUT)  DOUBLE PRECISION  WIDTH AND HEIGHT OF A PRINT
 C                                        POSITION, 0.01 MM
 C     X, Y    (INPUT)  DOUBLE PRECISION  THE POINT, FROM THE START
 C     CH1     (INPUT)  CHARACTER*1       THE MARK
-C     CHANGES: 2026-11-22 FIRST RECONSTRUCTION
+C     CHANGES: SEE THE HISTORY OF THE REPOSITORY (GIT LOG)
 C=======================================================================
       SUBROUTINE CMPMRK(GRID, NC, NR, CW, CH, X, Y, CH1)
       IMPLICIT NONE

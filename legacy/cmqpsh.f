@@ -4,7 +4,7 @@ C                                                               (SHARED)
 C     SOURCE:  RECONSTRUCTED (SEE CMOPT2). AN ITEM ALREADY QUEUED IS NOT
 C              QUEUED TWICE.
 C     M       (INPUT)  INTEGER  THE ITEM, 1..NITM
-C     CHANGES: 2026-11-22 FIRST RECONSTRUCTION
+C     CHANGES: SEE THE HISTORY OF THE REPOSITORY (GIT LOG)
 C=======================================================================
       SUBROUTINE CMQPSH(M)
       IMPLICIT NONE

@@ -6,7 +6,7 @@ C              X := 16807 X MOD (2**31 - 1), COMPUTED BY SCHRAGE'S
 C              METHOD SO THAT NO PRODUCT EXCEEDS 2**31 - 1.
 C     ISEED   (IN/OUT) INTEGER  THE LAST NUMBER, 1 .. 2**31 - 2; ON
 C                               RETURN THE NEXT ONE
-C     CHANGES: 2026-11-22 FIRST RECONSTRUCTION
+C     CHANGES: SEE THE HISTORY OF THE REPOSITORY (GIT LOG)
 C=======================================================================
       SUBROUTINE CMRAND(ISEED)
       IMPLICIT NONE

@@ -8,7 +8,7 @@ C              K 13 SWAP). A CYCLE (A B) REPEATED N TIMES BECOMES
 C              (B' A') REPEATED N TIMES, SO ITS CYC MOVES TO THE OTHER
 C              FRAME.
 C     I1, I2  (INPUT)  INTEGER  THE FRAMES I1..I2 OF /CMFRT/
-C     CHANGES: 2026-11-22 FIRST RECONSTRUCTION
+C     CHANGES: SEE THE HISTORY OF THE REPOSITORY (GIT LOG)
 C=======================================================================
       SUBROUTINE CMREV(I1, I2)
       IMPLICIT NONE

@@ -6,7 +6,7 @@ C              5TH FRAME TAKES 8764, SO 43823.5 WAS ROUNDED DOWN).
 C     I, IA, N (INPUT) INTEGER  0 .LE. I .LE. N, IA .GE. 0, N .GE. 1;
 C                               I*IA IS FORMED IN DOUBLE PRECISION,
 C                               EXACT BELOW 2**53
-C     CHANGES: 2026-11-22 FIRST RECONSTRUCTION
+C     CHANGES: SEE THE HISTORY OF THE REPOSITORY (GIT LOG)
 C=======================================================================
       INTEGER FUNCTION CMRHD(I, IA, N)
       IMPLICIT NONE

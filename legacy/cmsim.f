@@ -3,7 +3,7 @@ C     CMSIM  - RUN THE TAPE BEING BUILT ON THE MACHINE, SIMULATED
 C     SOURCE:  REPORT, "OPISANIE KOORDINATOGRAFA" (FIELD 1200 X 1200 MM,
 C              5.5 M/MIN ON LINES, 1.5 M/MIN ON ARCS) AND "SOSTAV
 C              KADRA" (TS: THE FRAME AND THE NEXT ONE ARE RUN N TIMES);
-C              SPEC 1 AND 3.
+C              DOCS/TAPE.MD.
 C     THE TOOL STARTS RAISED AT THE START POINT (0,0). A CYCLE IS NOT
 C     UNROLLED: ONE PASS IS RUN, AND SINCE EVERY PASS IS THE FIRST ONE
 C     SHIFTED BY THE SAME STEP, THE FIRST AND THE LAST PASS BOUND THE
@@ -16,7 +16,7 @@ C                               AND SCALE, AND REPORT IT IF NOT
 C     RESULTS IN /CMSTA/: DRAWN(IU), TRAVL(IU) MM, RTIME(IU) MINUTES,
 C     BBOX (XMIN, XMAX, YMIN, YMAX, 0.01 MM FROM THE START POINT), AND
 C     THE END STATE IENDX, IENDY (0.01 MM), IENDT (1 = TOOL DOWN).
-C     CHANGES: 2026-11-22 FIRST RECONSTRUCTION
+C     CHANGES: SEE THE HISTORY OF THE REPOSITORY (GIT LOG)
 C=======================================================================
       SUBROUTINE CMSIM(IU, ICHK)
       IMPLICIT NONE
@@ -53,8 +53,8 @@ C     ---- LOCAL -------------------------------------------------------
      1                 RX(2), RY(2)
       INTEGER I, J, NF, NREP, ITOOL, LOUT, K
       CHARACTER*1 TNAME(3)
-      CHARACTER*12 S1, S2, S3, S4
-      INTEGER L1, L2, L3, L4
+      CHARACTER*12 S1, S2, S3, S4, S5
+      INTEGER L1, L2, L3, L4, L5
       DATA TNAME / 'S', 'B', 'L' /
 C
       PX = 0.0D0
@@ -119,10 +119,12 @@ C     ---- THE FIELD: 0 .. 1200 MM ON THE MACHINE, IN BOTH AXES --------
             CALL CMFMM(IY0, S2, L2)
             CALL CMITOA(ISCN, S3, L3)
             CALL CMITOA(ISCD, S4, L4)
+            CALL CMITOA(NINT(FLD) / 100, S5, L5)
             CALL CMERR('TENZOR', JFCRD(I), JFCOL(I), 'TAPE ' //
-     1         TNAME(IU) // ' LEAVES THE 1200 X 1200 MM FIELD HERE '
-     2         // '(START ' // S1(1:L1) // ', ' // S2(1:L2) //
-     3         ' MM, SCALE ' // S3(1:L3) // ':' // S4(1:L4) // ')')
+     1         TNAME(IU) // ' LEAVES THE ' // S5(1:L5) // ' X ' //
+     2         S5(1:L5) // ' MM FIELD HERE '
+     3         // '(START ' // S1(1:L1) // ', ' // S2(1:L2) //
+     4         ' MM, SCALE ' // S3(1:L3) // ':' // S4(1:L4) // ')')
          END IF
       END IF
       I = I + NF

@@ -1,6 +1,6 @@
 C=======================================================================
 C     CMSPLT - SPLIT THE LONG STRAIGHT FRAMES OF THE TAPE       (SHARED)
-C     SOURCE:  SEED 004 (SEE CMSPL1); SPEC 9. WITH A FRAME LIMIT ON THE
+C     SOURCE:  SEED 004 (SEE CMSPL1). WITH A FRAME LIMIT ON THE
 C              P CARD, EVERY STRAIGHT FRAME FROM I1 ON WHOSE DX OR DY IS
 C              LONGER IS CUT BY CMSPL1. A CYCLE WITH A LONG FRAME IS RUN
 C              OUT INTO ITS FRAMES FIRST. AN ARC CANNOT BE CUT THIS WAY:
@@ -8,7 +8,7 @@ C              AN ARC FRAME BEYOND THE LIMIT IS AN ERROR OF ITS CARD.
 C              THE FRAMES ARE MOVED TO THE TOP OF THE TABLE AND READ
 C              BACK FROM THERE AS THE NEW ONES ARE WRITTEN BELOW THEM.
 C     I1      (INPUT)  INTEGER  THE FIRST FRAME THAT MAY BE SPLIT
-C     CHANGES: 2026-11-22 FIRST RECONSTRUCTION
+C     CHANGES: SEE THE HISTORY OF THE REPOSITORY (GIT LOG)
 C=======================================================================
       SUBROUTINE CMSPLT(I1)
       IMPLICIT NONE
@@ -34,6 +34,8 @@ C     ---- /CMFRT/ THE FRAMES OF THE TAPE BEING PUNCHED ----------------
       COMMON /CMFRT/ NFR, LFULL, JFX, JFY, JFDX, JFDY, JFCYC, JFK,
      1               JFCRD, JFCOL
 C     ---- LOCAL -------------------------------------------------------
+      CHARACTER*12 SN
+      INTEGER LN
       INTEGER I, J, N, NTOP, JTOP, IREP, NREP, NF, L
       LOGICAL LLONG
 C
@@ -90,9 +92,10 @@ C        A CYCLE WITHIN THE LIMIT STAYS AS IT IS
 C              THE TABLE MUST NOT GROW INTO THE FRAMES NOT YET READ
                IF (NFR + (MAX(ABS(JFDX(J)), ABS(JFDY(J))) / IFMAX + 1)
      1             .GE. JTOP) THEN
+                  CALL CMITOA(MXFRM, SN, LN)
                   CALL CMERR('TENZOR', JFCRD(J), 1, 'CAPACITY EXCEEDED:'
-     1               // ' MORE THAN 1000000 FRAMES ON ONE TAPE AFTER '
-     2               // 'SPLITTING (PARAMETER MXFRM)')
+     1               // ' MORE THAN ' // SN(1:LN) // ' FRAMES ON ONE '
+     2               // 'TAPE AFTER SPLITTING (PARAMETER MXFRM)')
                   LFULL = 1
                   RETURN
                END IF

@@ -1,7 +1,7 @@
 C=======================================================================
 C     CMSWAP - EXCHANGE TWO INTEGERS                            (SHARED)
 C     SOURCE:  RECONSTRUCTED.
-C     CHANGES: 2026-11-22 FIRST RECONSTRUCTION
+C     CHANGES: SEE THE HISTORY OF THE REPOSITORY (GIT LOG)
 C=======================================================================
       SUBROUTINE CMSWAP(IA, IB)
       IMPLICIT NONE

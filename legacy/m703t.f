@@ -2,11 +2,11 @@ C=======================================================================
 C     M703T  - THE FRAMES OF A PAD TAPE                        (M703T)
 C     SOURCE:  REPORT: P/L "DLYA OBRABOTKI MALYKH KONTAKTNYKH
 C              PLOSHCHADOK" AND "... BOL'SHIKH ..." (THE SMALL-PAD AND
-C              LARGE-PAD TAPES); SPEC 6.
+C              LARGE-PAD TAPES); DOCS/RECONSTRUCTION.MD.
 C     THE M FRAMES OF THE TAPE COME FIRST, IN DECK ORDER, FROM THE
 C     START POINT, EXACTLY AS PUNCHED ON THE CARDS; THEN THE PADS.
 C     IU      (INPUT)  INTEGER  1 = SMALL PADS, 2 = LARGE PADS
-C     CHANGES: 2026-11-22 FIRST RECONSTRUCTION
+C     CHANGES: SEE THE HISTORY OF THE REPOSITORY (GIT LOG)
 C=======================================================================
       SUBROUTINE M703T(IU)
       IMPLICIT NONE

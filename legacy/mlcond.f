@@ -1,10 +1,10 @@
 C=======================================================================
 C     MLCOND - THE CONDUCTORS, CIRCLES AND ARCS OF THE CONDUCTOR TAPE
 C                                                              (M703L)
-C     SOURCE:  REPORT (THE CONDUCTOR TAPE, M703L); SPEC 5.3, 6. EACH
+C     SOURCE:  REPORT (THE CONDUCTOR TAPE, M703L); DOCS/CARDS.MD. EACH
 C              CONDUCTOR (AN L CARD AND ITS + CARDS), CIRCLE (O) AND
 C              ARC (A) IS ONE ITEM OF THE TOUR.
-C     CHANGES: 2026-11-22 FIRST RECONSTRUCTION
+C     CHANGES: SEE THE HISTORY OF THE REPOSITORY (GIT LOG)
 C=======================================================================
       SUBROUTINE MLCOND
       IMPLICIT NONE

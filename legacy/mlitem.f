@@ -10,7 +10,7 @@ C              OF IT.
 C     I       (INPUT)  INTEGER  THE ITEM IN /CMITM/
 C     IEXP    (OUTPUT) INTEGER  THE ENTRY POINT, X, 0.01 MM
 C     IEYP    (OUTPUT) INTEGER  THE ENTRY POINT, Y
-C     CHANGES: SEE THE HISTORY OF THE REPOSITORY
+C     CHANGES: SEE THE HISTORY OF THE REPOSITORY (GIT LOG)
 C=======================================================================
       SUBROUTINE MLITEM(I, IEXP, IEYP)
       IMPLICIT NONE

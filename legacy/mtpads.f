@@ -1,11 +1,11 @@
 C=======================================================================
 C     MTPADS - THE PADS OF ONE PAD TAPE                         (M703T)
-C     SOURCE:  REPORT (A SMALL-PAD AND A LARGE-PAD TAPE); SPEC 5.3, 6.
+C     SOURCE:  REPORT (A SMALL-PAD AND A LARGE-PAD TAPE); DOCS/CARDS.MD.
 C              A PAD BELONGS TO THE SMALL-PAD TAPE WHEN ITS SIZE (THE
 C              LARGER OF W AND H) IS AT MOST DMAX. EACH D CARD, A PAD OR
 C              A ROW, IS ONE ITEM OF THE TOUR.
 C     IU      (INPUT)  INTEGER  1 = SMALL PADS, 2 = LARGE PADS
-C     CHANGES: 2026-11-22 FIRST RECONSTRUCTION
+C     CHANGES: SEE THE HISTORY OF THE REPOSITORY (GIT LOG)
 C=======================================================================
       SUBROUTINE MTPADS(IU)
       IMPLICIT NONE

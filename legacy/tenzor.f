@@ -1,7 +1,7 @@
 C=======================================================================
 C     TENZOR - READ THE CARD DECK, PUNCH THE EM-703 TAPES     (TENZOR)
 C     SOURCE:  REPORT P11-10356, "SOSTAV PROGRAMMNOGO OBESPECHENIYA"
-C              AND "PAKET ZADACHI"; SPEC SECTIONS 4-6.
+C              AND "PAKET ZADACHI"; DOCS/RECONSTRUCTION.MD.
 C     THE DECK IS AN OPTIONAL JOB ENVELOPE (CONTROL CARDS WITH * OR #
 C     IN COLUMN 1, ENDED BY *EXECUTE), THEN PACKAGES: A NAME CARD, DATA
 C     CARDS, AND A CARD WITH C (ANOTHER PACKAGE FOLLOWS) OR E (THE END)
@@ -15,7 +15,7 @@ C                               THE P CARD SAYS, 1 = "8", 2 = "8" WITH
 C                               CONTROL
 C     IRC     (OUTPUT) INTEGER  0 = ALL PACKAGES PUNCHED, 1 = THE DECK
 C                               HAD ERRORS (SEE THE LISTINGS)
-C     CHANGES: 2026-11-22 FIRST RECONSTRUCTION
+C     CHANGES: SEE THE HISTORY OF THE REPOSITORY (GIT LOG)
 C=======================================================================
       SUBROUTINE TENZOR(ICODEA, IRC)
       IMPLICIT NONE

@@ -1,14 +1,15 @@
 C=======================================================================
 C     TZCKEY - WHICH CONTROL CARD IS THIS                     (TENZOR)
 C     SOURCE:  REPORT, "PAKET ZADACHI" (THE MONITOR "DUBNA" CARDS);
-C              SPEC 5.1. THE REPORT'S REPRODUCTION PRINTS # FOR * AND
-C              _ FOR A BLANK, IN LOWER CASE; ALL OF THAT IS ACCEPTED.
+C              DOCS/CARDS.MD. THE REPORT'S REPRODUCTION PRINTS # FOR *
+C              AND _ FOR A BLANK, IN LOWER CASE; ALL OF THAT IS
+C              ACCEPTED.
 C     CARD    (INPUT)  CHARACTER*80  A CARD WITH * OR # IN COLUMN 1
 C     IKEY    (OUTPUT) INTEGER  1 NAME, 2 TIME, 3 PASS, 4 TAPE,
 C                               5 PERSO, 6 MAIN, 7 NO LOAD LIST,
 C                               8 CALL, 9 EXECUTE, 10 END FILE,
 C                               0 NOT A CONTROL CARD OF THE MONITOR
-C     CHANGES: 2026-11-22 FIRST RECONSTRUCTION
+C     CHANGES: SEE THE HISTORY OF THE REPOSITORY (GIT LOG)
 C=======================================================================
       SUBROUTINE TZCKEY(CARD, IKEY)
       IMPLICIT NONE

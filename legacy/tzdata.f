@@ -1,8 +1,8 @@
 C=======================================================================
 C     TZDATA - TAKE ONE DATA CARD OF A PACKAGE                (TENZOR)
-C     SOURCE:  RECONSTRUCTED, SPEC 5.3 (COLUMN 1 IS THE CARD TYPE).
+C     SOURCE:  RECONSTRUCTED, DOCS/CARDS.MD (COLUMN 1 IS THE CARD TYPE).
 C     CARD    (INPUT)  CHARACTER*80  THE CARD (NOT C, E OR *END FILE)
-C     CHANGES: 2026-11-22 FIRST RECONSTRUCTION
+C     CHANGES: SEE THE HISTORY OF THE REPOSITORY (GIT LOG)
 C=======================================================================
       SUBROUTINE TZDATA(CARD)
       IMPLICIT NONE

@@ -1,7 +1,7 @@
 C=======================================================================
 C     TZDCRD - THE D CARD: A PAD OR A ROW OF EQUAL PADS       (TENZOR)
 C     SOURCE:  REPORT (PADS ARE PUNCHED ON TWO TAPES, SMALL AND LARGE);
-C              RECONSTRUCTED LAYOUT, SPEC 5.3.
+C              RECONSTRUCTED LAYOUT, DOCS/CARDS.MD.
 C     COLUMNS  11-20 X, 21-30 Y (F10.2) THE CENTRE; 31-38 W (F8.2) THE
 C              DIAMETER, OR THE WIDTH IF H IS GIVEN; 39-46 H (F8.2) THE
 C              HEIGHT, BLANK FOR A ROUND PAD; 47-50 N (I4, BLANK = 1);
@@ -10,7 +10,7 @@ C     A PAD WHOSE SIZE (THE LARGER OF W, H) IS AT MOST DMAX GOES ON THE
 C     SMALL-PAD TAPE (TOOL W1), A LARGER ONE ON THE LARGE-PAD TAPE (W2).
 C     A PAD SMALLER THAN ITS TOOL CANNOT BE DRAWN AND IS AN ERROR.
 C     CARD    (INPUT)  CHARACTER*80  THE D CARD
-C     CHANGES: 2026-11-22 FIRST RECONSTRUCTION
+C     CHANGES: SEE THE HISTORY OF THE REPOSITORY (GIT LOG)
 C=======================================================================
       SUBROUTINE TZDCRD(CARD)
       IMPLICIT NONE
@@ -54,6 +54,8 @@ C     ---- /TZGEO/ THE BOARD: PADS, CONDUCTORS, CIRCLES AND ARCS -------
      2               KVCRD, NARC, KAX, KAY, KADX, KADY, KAXS, KAYS,
      3               KAK, KACRD, LCOPEN, LGFULL
 C     ---- LOCAL -------------------------------------------------------
+      CHARACTER*12 SN
+      INTEGER LN
       INTEGER IX, IY, IW, IH, N, ISX, ISY, IOK, LB, LBW, IU, IT, ICOL
       CHARACTER*12 S1, S2
       INTEGER L1, L2
@@ -127,8 +129,9 @@ C     ---- ITS TAPE AND TOOL; THE PAD MAY NOT BE SMALLER THAN THE TOOL
       END IF
 C     ---- KEEP IT -----------------------------------------------------
       IF (NPAD .GE. MXPAD) THEN
-         CALL TZFULL(1, 'MORE THAN 200000 D CARDS IN ONE PACKAGE '
-     1      // '(PARAMETER MXPAD)')
+         CALL CMITOA(MXPAD, SN, LN)
+         CALL TZFULL(1, 'MORE THAN ' // SN(1:LN) // ' D CARDS IN ONE '
+     1      // 'PACKAGE (PARAMETER MXPAD)')
          RETURN
       END IF
       NPAD = NPAD + 1

@@ -1,7 +1,7 @@
 C=======================================================================
 C     TZGCLR - EMPTY THE TABLES OF THE BOARD FOR A NEW PACKAGE (TENZOR)
 C     SOURCE:  RECONSTRUCTED.
-C     CHANGES: 2026-11-22 FIRST RECONSTRUCTION
+C     CHANGES: SEE THE HISTORY OF THE REPOSITORY (GIT LOG)
 C=======================================================================
       SUBROUTINE TZGCLR
       IMPLICIT NONE

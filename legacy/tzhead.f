@@ -1,8 +1,8 @@
 C=======================================================================
 C     TZHEAD - THE HEADING OF A PACKAGE'S LISTING             (TENZOR)
-C     SOURCE:  RECONSTRUCTED, SPEC 4-6: THE JOB NAME FROM *NAME, THE
-C              ENVELOPE CARDS ECHOED, THE PACKAGE, A COLUMN RULER.
-C     CHANGES: 2026-11-22 FIRST RECONSTRUCTION
+C     SOURCE:  RECONSTRUCTED, DOCS/FILES.MD: THE JOB NAME FROM *NAME,
+C              THE ENVELOPE CARDS ECHOED, THE PACKAGE, A COLUMN RULER.
+C     CHANGES: SEE THE HISTORY OF THE REPOSITORY (GIT LOG)
 C=======================================================================
       SUBROUTINE TZHEAD
       IMPLICIT NONE

@@ -1,7 +1,7 @@
 C=======================================================================
 C     TZLCRD - THE L AND + CARDS: THE VERTICES OF A CONDUCTOR  (TENZOR)
 C     SOURCE:  REPORT (ONE TAPE FOR THE CONDUCTORS, M703L); LAYOUT
-C              RECONSTRUCTED, SPEC 5.3.
+C              RECONSTRUCTED, DOCS/CARDS.MD.
 C     L:  11-20 X, 21-30 Y THE FIRST VERTEX; 31-38 W (F8.2) THE WIDTH,
 C         BLANK = THE CONDUCTOR TOOL W3. IT STARTS A CONDUCTOR.
 C     +:  11-20 X, 21-30 Y THE NEXT VERTEX OF THE CONDUCTOR STARTED.
@@ -10,7 +10,7 @@ C     CONDUCTOR ENDS AT THE NEXT CARD THAT IS NOT A + CARD (TZLCLS).
 C     LCOPEN: 0 NO CONDUCTOR OPEN, 1 OPEN, 2 ITS L CARD WAS IN ERROR
 C     (ITS + CARDS ARE STILL CHECKED FOR FORM, BUT NOT KEPT).
 C     CARD    (INPUT)  CHARACTER*80  THE L OR + CARD
-C     CHANGES: 2026-11-22 FIRST RECONSTRUCTION
+C     CHANGES: SEE THE HISTORY OF THE REPOSITORY (GIT LOG)
 C=======================================================================
       SUBROUTINE TZLCRD(CARD)
       IMPLICIT NONE
@@ -54,6 +54,8 @@ C     ---- /TZGEO/ THE BOARD: PADS, CONDUCTORS, CIRCLES AND ARCS -------
      2               KVCRD, NARC, KAX, KAY, KADX, KADY, KAXS, KAYS,
      3               KAK, KACRD, LCOPEN, LGFULL
 C     ---- LOCAL -------------------------------------------------------
+      CHARACTER*12 SN
+      INTEGER LN
       INTEGER IX, IY, IW, IOK, LB
       CHARACTER*12 S1, S2
       INTEGER L1, L2
@@ -87,13 +89,15 @@ C
          CALL TZCOOR(IW, 31, 'W', IOK)
          IF (IOK .EQ. 0) RETURN
          IF (NCON .GE. MXCON) THEN
-            CALL TZFULL(2, 'MORE THAN 50000 CONDUCTORS IN ONE PACKAGE '
-     1         // '(PARAMETER MXCON)')
+            CALL CMITOA(MXCON, SN, LN)
+            CALL TZFULL(2, 'MORE THAN ' // SN(1:LN) // ' CONDUCTORS IN '
+     1         // 'ONE PACKAGE (PARAMETER MXCON)')
             RETURN
          END IF
          IF (NVTX .GE. MXVTX) THEN
-            CALL TZFULL(4, 'MORE THAN 200000 VERTICES IN ONE PACKAGE '
-     1         // '(PARAMETER MXVTX)')
+            CALL CMITOA(MXVTX, SN, LN)
+            CALL TZFULL(4, 'MORE THAN ' // SN(1:LN) // ' VERTICES IN '
+     1         // 'ONE PACKAGE (PARAMETER MXVTX)')
             RETURN
          END IF
          NCON = NCON + 1
@@ -109,8 +113,9 @@ C
       ELSE
          IF (IX .EQ. KVX(NVTX) .AND. IY .EQ. KVY(NVTX)) RETURN
          IF (NVTX .GE. MXVTX) THEN
-            CALL TZFULL(4, 'MORE THAN 200000 VERTICES IN ONE PACKAGE '
-     1         // '(PARAMETER MXVTX)')
+            CALL CMITOA(MXVTX, SN, LN)
+            CALL TZFULL(4, 'MORE THAN ' // SN(1:LN) // ' VERTICES IN '
+     1         // 'ONE PACKAGE (PARAMETER MXVTX)')
             RETURN
          END IF
          NVTX = NVTX + 1

@@ -1,7 +1,7 @@
 C=======================================================================
 C     TZMCRD - THE M CARD: ONE FRAME PROGRAMMED BY HAND        (TENZOR)
 C     SOURCE:  REPORT, "SOSTAV KADRA" AND EXAMPLES 1-5 (THE FRAME OF
-C              THE EM-703); SPEC 3 AND 5.3. THE FRAME IS PUNCHED AS
+C              THE EM-703); DOCS/CARDS.MD. THE FRAME IS PUNCHED AS
 C              GIVEN: NOT MERGED, NOT FOLDED INTO CYCLES, NOT REORDERED.
 C     COLUMNS  2 THE TAPE: S SMALL PADS, B LARGE PADS, L (OR BLANK)
 C              CONDUCTORS; 11-20 X, 21-30 Y, 31-40 DX, 41-50 DY
@@ -13,7 +13,7 @@ C              CENTRE), RADIUS AT MOST 10 M, AND ITS END (X+DX, Y+DY)
 C              ON THE SAME CIRCLE WITHIN 0.01 MM. CYC IS BLANK, 0 OR
 C              AT LEAST 2.
 C     CARD    (INPUT)  CHARACTER*80  THE M CARD
-C     CHANGES: 2026-11-22 FIRST RECONSTRUCTION
+C     CHANGES: SEE THE HISTORY OF THE REPOSITORY (GIT LOG)
 C=======================================================================
       SUBROUTINE TZMCRD(CARD)
       IMPLICIT NONE
@@ -49,6 +49,8 @@ C     ---- /CMMAN/ MANUAL FRAMES OF M CARDS, IN DECK ORDER -------------
       COMMON /CMMAN/ NMAN, MMTAP, MMX, MMY, MMDX, MMDY, MMCYC, MMK,
      1               MMCRD
 C     ---- LOCAL -------------------------------------------------------
+      CHARACTER*12 SN
+      INTEGER LN
       INTEGER MXRAD
       PARAMETER (MXRAD = 1000000)
       INTEGER IT, IX, IY, IDX, IDY, ICYC, K, IOK, LB, LBK
@@ -143,9 +145,12 @@ C     ---- THE FRAME LIMIT OF THE P CARD: AN M FRAME IS NOT SPLIT ------
 C     ---- KEEP IT; A FULL TABLE IS REPORTED ONCE (NMAN = MXMAN + 1 THEN
 C     MARKS IT; THE PACKAGE HAS AN ERROR, SO THE TABLE IS NOT USED) ----
       IF (NMAN .GE. MXMAN) THEN
-         IF (NMAN .EQ. MXMAN) CALL CMERR('TENZOR', NCARD, 1, 'CAPACITY '
-     1      // 'EXCEEDED: MORE THAN 20000 M CARDS IN ONE PACKAGE '
-     2      // '(PARAMETER MXMAN)')
+         IF (NMAN .EQ. MXMAN) THEN
+            CALL CMITOA(MXMAN, SN, LN)
+            CALL CMERR('TENZOR', NCARD, 1, 'CAPACITY EXCEEDED: MORE '
+     1         // 'THAN ' // SN(1:LN) // ' M CARDS IN ONE PACKAGE '
+     2         // '(PARAMETER MXMAN)')
+         END IF
          NMAN = MXMAN + 1
          RETURN
       END IF

@@ -1,14 +1,14 @@
 C=======================================================================
 C     TZPBEG - BEGIN A PACKAGE AT ITS NAME CARD                (TENZOR)
 C     SOURCE:  REPORT, "PAKET ZADACHI": "P/K S NAZVANIEM DANNYKH V
-C              POZITSIYAKH 1-18"; SPEC 4 (FILE NAMES), 5.2.
+C              POZITSIYAKH 1-18"; DOCS/FILES.MD, CARDS.MD.
 C     THE NAME (COLUMNS 1-18) NAMES THE OUTPUT FILES. IT IS SANITISED:
 C     LEADING AND TRAILING BLANKS DROPPED, ANY CHARACTER BUT A LETTER,
 C     A DIGIT, - AND _ BECOMES _. A NAME ALREADY USED IN THIS JOB IS AN
 C     ERROR, AND THE PACKAGE'S FILES GET A SUFFIX -2, -3, ... SO THAT
 C     NOTHING OF THE EARLIER PACKAGE IS OVERWRITTEN.
 C     CARD    (INPUT)  CHARACTER*80  THE NAME CARD
-C     CHANGES: 2026-11-22 FIRST RECONSTRUCTION
+C     CHANGES: SEE THE HISTORY OF THE REPOSITORY (GIT LOG)
 C=======================================================================
       SUBROUTINE TZPBEG(CARD)
       IMPLICIT NONE
@@ -51,7 +51,7 @@ C     ---- LOCAL -------------------------------------------------------
       DATA OKCH / 'ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0
      1123456789' /
 C
-C     ---- A NEW PACKAGE: DEFAULTS OF THE P CARD (SPEC 5.3) ------------
+C     ---- A NEW PACKAGE: DEFAULTS OF THE P CARD (DOCS/CARDS.MD) -------
       LPKG = 1
       ICFST = NCARD
       NPCRD = 0
