@@ -60,7 +60,7 @@ def _add_decode(sub: argparse._SubParsersAction) -> None:
 
 
 def _run_f77check(args: argparse.Namespace) -> int:
-    return f77check.main(args.dir, write_common=args.write_common)
+    return f77check.main(args.dir, write_common=args.write_common, index=args.index)
 
 
 def _add_f77check(sub: argparse._SubParsersAction) -> None:
@@ -72,6 +72,8 @@ def _add_f77check(sub: argparse._SubParsersAction) -> None:
                    help="directory to check (default: legacy)")
     p.add_argument("--write-common", action="store_true",
                    help="first write every COMMON copy from DIR/COMMON.inc")
+    p.add_argument("--index", action="store_true",
+                   help="first write the index of DIR/README.md from the routines")
     p.set_defaults(func=_run_f77check)
 
 

@@ -68,6 +68,7 @@ RULES: dict[str, str] = {
     "F77-BLKCOM": "no blank COMMON",
     "F77-PARAM": "a PARAMETER constant has the same type and value in every unit",
     "F77-DECL": "every variable is declared (gfortran: 'has no IMPLICIT type')",
+    "F77-INDEX": "the index of the directory's README.md is the one the routines give",
     "F77-COMPILE": "the file compiles (other gfortran -fsyntax-only errors)",
 }
 
@@ -881,6 +882,162 @@ def write_copies(paths: Iterable[Path], master: dict[str, list[str]]) -> list[Pa
 
 
 # ---------------------------------------------------------------------------
+# The index of legacy/README.md, written from the routines themselves.
+# ---------------------------------------------------------------------------
+INDEX_BEGIN = "<!-- index: written by `python -m harness f77check --index`; do not edit -->"
+INDEX_END = "<!-- end of index -->"
+_UNIT_LINE = re.compile(r"^      (?:(?:INTEGER|LOGICAL|REAL|DOUBLE PRECISION) +)?"
+                        r"(PROGRAM|SUBROUTINE|FUNCTION|BLOCK DATA) +([A-Z][A-Z0-9]*)")
+_TITLE = re.compile(r"^C     ([A-Z][A-Z0-9]*) *- (.*)$")
+_TAG = re.compile(r"\((TENZOR|M703T|M703L|SHARED)\)\s*$")
+
+
+@dataclass
+class Routine:
+    """One program unit of legacy/, as its header describes it."""
+
+    name: str
+    kind: str                       # PROGRAM, SUBROUTINE, FUNCTION, BLOCK DATA
+    program: str                    # TENZOR, M703T, M703L or SHARED (the header's tag)
+    purpose: str
+    source: str                     # the first clause of the SOURCE line
+    calls: list[str] = field(default_factory=list)     # in order of first call
+    commons: list[str] = field(default_factory=list)   # the master sections it copies
+
+
+def _first_sentence(text: str) -> str:
+    """Text up to the first full stop, semicolon or colon outside
+    parentheses and quotes: what a header's SOURCE paragraph names first."""
+    depth, quoted = 0, False
+    for k, ch in enumerate(text):
+        if ch == '"':
+            quoted = not quoted
+        elif not quoted and ch == "(":
+            depth += 1
+        elif not quoted and ch == ")":
+            depth -= 1
+        elif not quoted and depth == 0 and ch in ".;:" and text[k + 1:k + 2] in (" ", ""):
+            word = text[:k].split()[-1] if text[:k].split() else ""
+            if ch == "." and word.isalpha() and len(word) <= 4 and text[k + 1:].strip():
+                continue                  # an abbreviation: SYST. J., FIG. 1
+            return text[:k]
+    return text
+
+
+def read_routine(path: Path, units: set[str]) -> Routine:
+    """The header, the calls (CALL, a function reference, a routine passed as
+    an argument) and the COMMON copies of one file of legacy/."""
+    lines = path.read_text(encoding="ascii").splitlines()
+    title = next(m for m in map(_TITLE.match, lines[:3]) if m)
+    purpose, program = title.group(2).strip(), ""
+    tag = _TAG.search(purpose)
+    if tag:
+        purpose = purpose[:tag.start()].strip()
+    else:
+        tag = _TAG.search(lines[2]) if len(lines) > 2 else None
+    program = tag.group(1) if tag else ""
+    start = next((k for k, ln in enumerate(lines) if ln.startswith("C     SOURCE:")), None)
+    para = []
+    if start is not None:
+        para.append(lines[start][len("C     SOURCE:"):].strip())
+        for ln in lines[start + 1:]:
+            if not ln.startswith("C              "):
+                break
+            para.append(ln.strip()[1:].strip())
+    source = _first_sentence(" ".join(para))
+    unit = next(m for m in map(_UNIT_LINE.match, lines) if m)
+    calls: list[str] = []
+    for line in lines:
+        if line[:1] in "Cc*" or _UNIT_LINE.match(line):
+            continue
+        stmt = line[6:72] if len(line) > 6 else ""
+        bare = re.sub(r"'[^']*'", "", stmt)
+        devices = set(re.findall(r"CALL *(DV[A-Z0-9]*)", bare))
+        for name in re.findall(r"[A-Z][A-Z0-9]*", bare):
+            if (name in units or name in devices) and name != unit.group(2) \
+                    and name not in calls:
+                calls.append(name)
+    commons = [name for name, _a, _b in common_copies(lines)]
+    return Routine(unit.group(2), unit.group(1), program, purpose, source, calls, commons)
+
+
+def legacy_index(root: Path) -> str:
+    """The generated part of legacy/README.md: the call tree, the COMMON
+    blocks with their users, and one line per routine."""
+    files = find_sources(root)
+    names = {p.stem.upper() for p in files}
+    routines = {r.name: r for r in (read_routine(p, names) for p in files)}
+    out = [INDEX_BEGIN, "", "### The call tree", "",
+           "Each routine is shown under the first routine that calls it; a later",
+           "call shows its name only, followed by `...`. `DV...` routines are the",
+           "devices of `src/monitor/`.", "", "```"]
+    shown: set[str] = set()
+
+    def walk(name: str, depth: int) -> None:
+        r = routines.get(name)
+        kind = f" ({r.kind})" if r and r.kind not in ("SUBROUTINE", "PROGRAM") else ""
+        again = name in shown
+        out.append("  " * depth + name + kind + (" ..." if again and r and r.calls else ""))
+        if again or r is None:
+            return
+        shown.add(name)
+        for c in r.calls:
+            walk(c, depth + 1)
+
+    walk("TENZOR", 0)
+    out += ["```", ""]
+    lost = sorted(set(routines) - shown)
+    if lost:
+        out += ["Not called from TENZOR: " + ", ".join(lost) + ".", ""]
+    out += ["### The COMMON blocks", "",
+            "| section of COMMON.inc | copied into |", "|---|---|"]
+    users: dict[str, list[str]] = {}
+    for n, r in sorted(routines.items()):
+        for c in r.commons:
+            users.setdefault(c, []).append(n)
+    for c in sorted(users):
+        out.append(f"| /{c}/ | {', '.join(users[c])} |")
+    out += ["", "### The routines", "",
+            "| routine | program | what it does | source |", "|---|---|---|---|"]
+    for n, r in sorted(routines.items()):
+        out.append(f"| [{n}]({n.lower()}.f) | {r.program or r.kind} | {r.purpose} | "
+                   f"{r.source.replace('|', '/')} |")
+    out += ["", INDEX_END]
+    return "\n".join(out) + "\n"
+
+
+def index_problems(root: Path) -> list[str]:
+    """What is wrong with the index in root/README.md (empty: it is current)."""
+    readme = root / "README.md"
+    if not readme.is_file():
+        return [f"{readme}: missing"]
+    text = readme.read_text(encoding="utf-8")
+    if INDEX_BEGIN not in text or INDEX_END not in text:
+        return [f"{readme}: no generated index between its markers"]
+    have = text[text.index(INDEX_BEGIN):text.index(INDEX_END) + len(INDEX_END)] + "\n"
+    want = legacy_index(root)
+    if have != want:
+        a, b = have.splitlines(), want.splitlines()
+        k = next((i for i, (p, q) in enumerate(zip(a, b)) if p != q), min(len(a), len(b)))
+        got = a[k] if k < len(a) else "(the end)"
+        exp = b[k] if k < len(b) else "(the end)"
+        return [f"{readme}: the index is out of date at its line {k + 1}: "
+                f"{got!r}, the routines say {exp!r} (python -m harness f77check --index)"]
+    return []
+
+
+def write_index(root: Path) -> bool:
+    """Write the index into root/README.md between its markers; True if it changed."""
+    readme = root / "README.md"
+    text = readme.read_text(encoding="utf-8")
+    a, b = text.index(INDEX_BEGIN), text.index(INDEX_END) + len(INDEX_END) + 1
+    new = text[:a] + legacy_index(root) + text[b:]
+    if new != text:
+        readme.write_text(new, encoding="utf-8")
+    return new != text
+
+
+# ---------------------------------------------------------------------------
 # Entry points.
 # ---------------------------------------------------------------------------
 def find_sources(root: str | os.PathLike[str]) -> list[Path]:
@@ -934,9 +1091,10 @@ def check_dir(path: str | os.PathLike[str] = "legacy",
                        master if master.is_file() else None)
 
 
-def main(directory: str = "legacy", write_common: bool = False) -> int:
+def main(directory: str = "legacy", write_common: bool = False, index: bool = False) -> int:
     """CLI: print violations and a summary; 0 clean, 1 violations, 2 no input.
-    With ``write_common``, first rewrite the COMMON copies from the master."""
+    With ``write_common``, first rewrite the COMMON copies from the master;
+    with ``index``, first rewrite the index of DIR/README.md."""
     root = Path(directory)
     if not root.is_dir():
         print(f"f77check: {directory}: not a directory", file=sys.stderr)
@@ -953,9 +1111,20 @@ def main(directory: str = "legacy", write_common: bool = False) -> int:
             return 2
         for path in write_copies(files, read_master(master)):
             print(f"f77check: wrote the COMMON copies of {path}")
+    if index:
+        try:
+            if write_index(root):
+                print(f"f77check: wrote the index of {root / 'README.md'}")
+        except (OSError, ValueError) as exc:
+            print(f"f77check: {root / 'README.md'}: cannot write the index: {exc}",
+                  file=sys.stderr)
+            return 2
     notes: list[str] = []
     violations = check_files(files, notes=notes,
                              master=master if master.is_file() else None)
+    if (root / "README.md").is_file():
+        violations += [Violation(str(root / "README.md"), 1, 1, "F77-INDEX", p)
+                       for p in index_problems(root)]
     for v in violations:
         print(v)
     for note in notes:

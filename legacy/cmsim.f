@@ -1,5 +1,6 @@
 C=======================================================================
 C     CMSIM  - RUN THE TAPE BEING BUILT ON THE MACHINE, SIMULATED
+C                                                               (SHARED)
 C     SOURCE:  REPORT, "OPISANIE KOORDINATOGRAFA" (FIELD 1200 X 1200 MM,
 C              5.5 M/MIN ON LINES, 1.5 M/MIN ON ARCS) AND "SOSTAV
 C              KADRA" (TS: THE FRAME AND THE NEXT ONE ARE RUN N TIMES);

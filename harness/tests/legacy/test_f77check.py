@@ -522,3 +522,14 @@ def test_legacy_has_a_master_for_every_block_it_uses() -> None:
     declared = {b for sec in master.values()
                 for b in re.findall(r"^      COMMON */([A-Z0-9]+)/", "\n".join(sec), re.M)}
     assert used == declared, used ^ declared
+
+
+def test_a_readme_whose_index_is_stale_fails_the_check(tmp_path: Path, capsys) -> None:
+    write(tmp_path, "cmone.f", subroutine("CMONE", ["      I = 1"]))
+    (tmp_path / "README.md").write_text(
+        "# test\n\n<!-- index: written by `python -m harness f77check --index`; "
+        "do not edit -->\nstale\n<!-- end of index -->\n", encoding="utf-8")
+    assert main(["f77check", str(tmp_path)]) == 1
+    assert "F77-INDEX" in capsys.readouterr().out
+    assert main(["f77check", "--index", str(tmp_path)]) == 0
+    assert "| [CMONE](cmone.f) |" in (tmp_path / "README.md").read_text()

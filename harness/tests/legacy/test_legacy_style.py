@@ -1,16 +1,18 @@
-"""SPEC section 7 holds for every file of legacy/: the faithful programs read as
-a 1977 listing (fixed form, six-character names, upper case, COMMON blocks and
-PARAMETERs declared alike everywhere, every variable declared)."""
+"""The rules of legacy/README.md hold for every file of legacy/: the faithful
+programs read as a 1977 listing (fixed form, six-character names, upper case,
+every COMMON copy the master text of COMMON.inc, PARAMETERs alike everywhere,
+every variable declared), and README's index is the one the routines give."""
 from __future__ import annotations
 
+import shutil
 from pathlib import Path
 
-from harness.f77check import check_dir
+from harness.f77check import check_dir, index_problems, legacy_index, write_index
 
 LEGACY = Path(__file__).resolve().parents[3] / "legacy"
 
 
-def test_legacy_sources_follow_spec_section_7():
+def test_legacy_sources_follow_the_rules():
     notes: list[str] = []
     violations = check_dir(LEGACY, notes=notes)
     assert not notes, notes  # gfortran must be there: the set-up installs it
@@ -24,3 +26,29 @@ def test_every_unit_names_its_source_and_ends_with_a_trailer():
         assert f"C     {unit}" in text.splitlines()[1] or f"C     {unit} " in text, path
         assert "C     SOURCE:" in text, path
         assert f"C     END OF {unit}" in text, path
+
+
+def test_readme_index_is_the_one_the_routines_give():
+    assert index_problems(LEGACY) == []
+
+
+def test_every_routine_names_its_program_and_is_reached_from_tenzor():
+    index = legacy_index(LEGACY)
+    table = index.split("### The routines", 1)[1]
+    rows = [line for line in table.splitlines() if line.startswith("| [")]
+    assert len(rows) == len(list(LEGACY.glob("*.f")))
+    for row in rows:
+        assert row.split(" | ")[1] in {"TENZOR", "M703T", "M703L", "SHARED"}, row
+    assert "Not called from TENZOR" not in index
+
+
+def test_a_stale_index_is_caught(tmp_path):
+    for name in ("README.md", "cmitoa.f", "cmtrim.f"):
+        shutil.copy(LEGACY / name, tmp_path / name)
+    write_index(tmp_path)
+    assert index_problems(tmp_path) == []
+    path = tmp_path / "cmtrim.f"
+    path.write_text(path.read_text().replace("LENGTH OF A STRING", "THE LENGTH OF A TEXT"))
+    problems = index_problems(tmp_path)
+    assert len(problems) == 1 and "out of date" in problems[0] and "THE LENGTH OF A TEXT" \
+        in problems[0], problems
