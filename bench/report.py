@@ -48,7 +48,7 @@ COLUMNS: dict[str, str] = {
     "pad_travel_m": "TENZOR's raised travel on the two pad tapes (simulated: also inside rows), m",
 }
 
-#: Targets of issue 7.
+#: The targets of docs/PERFORMANCE.md: 100 000 pads in 2 s, a tour within 5 % of LKH-3's.
 TARGET_SECONDS_100K = 2.0
 TARGET_TOUR_RATIO = 1.05
 TARGET_TIME_RATIO = 0.10
@@ -135,7 +135,7 @@ def _num(r: dict, key: str) -> float | None:
 
 
 def targets(rows: Sequence[dict]) -> list[tuple[str, bool | None, str]]:
-    """Each target of issue 7: (what, met (None: not measured), the figures)."""
+    """Each target of docs/PERFORMANCE.md: (what, met (None: not measured), the figures)."""
     out: list[tuple[str, bool | None, str]] = []
     big = [r for r in rows if int(float(r["pads"])) >= 100000]
     if big:

@@ -138,7 +138,7 @@ class Package:
 
 
 def sanitise(name: str) -> str:
-    """SPEC 4: letters, digits, '-' and '_' kept, anything else becomes '_'
+    """docs/FILES.md: letters, digits, '-' and '_' kept, anything else becomes '_'
     (leading and trailing blanks of the name card dropped first)."""
     return re.sub(r"[^A-Za-z0-9_-]", "_", name.strip())
 

@@ -1,7 +1,7 @@
 """The EM-703 coordinatograph, simulated frame by frame (the harness's own).
 
-Source: SPEC sections 1 and 3 (the report's "Описание координатографа" and
-"Состав кадра").  Every coordinate is an integer in 0.01 mm ("units"); only
+Source: the report's "Описание координатографа" and "Состав кадра"
+(docs/TAPE.md).  Every coordinate is an integer in 0.01 mm ("units"); only
 the outputs whose names end in ``_mm`` (and ``minutes``) are in millimetres.
 
 Semantics:
@@ -30,7 +30,7 @@ from collections.abc import Iterator, Sequence
 from dataclasses import dataclass, field
 from typing import Protocol, Union
 
-#: Speeds of SPEC section 1, in mm per minute.
+#: Speeds of the report's machine, in mm per minute.
 LINE_SPEED_MM_MIN = 5500.0
 ARC_SPEED_MM_MIN = 1500.0
 TRAVEL_SPEED_MM_MIN = 5500.0

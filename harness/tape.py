@@ -1,7 +1,7 @@
 """EM-703 control tapes: the harness's own decoder and encoder.
 
 Source: Pakhomov, JINR P11-10356 (1977), Table I "Коды координатографа
-ЭМ-703" and the section "Состав кадра"; SPEC sections 2, 3 and 4.  The code
+ЭМ-703" and the section "Состав кадра"; docs/TAPE.md and docs/FILES.md.  The code
 table below is transcribed from the report by hand and shares nothing with
 the Fortran programs this module checks.
 
@@ -434,7 +434,7 @@ def decode(data: bytes, code: str = "auto") -> Tape:
     them apart (a plain 3, 5, 6, 9 -> "8"; a controlled 23, 25, 26, 31 -> "K");
     a later row of the other variant is a "mixed code" error at that row.  A
     tape with no such row decodes the same either way and is reported as "8".
-    Raises :class:`TapeError` for any deviation from SPEC sections 2-4.
+    Raises :class:`TapeError` for any deviation from docs/TAPE.md.
     """
     if code not in ("8", "K", "auto"):
         raise ValueError(f"code must be '8', 'K' or 'auto', not {code!r}")
@@ -489,7 +489,7 @@ def decode(data: bytes, code: str = "auto") -> Tape:
 
 
 # ---------------------------------------------------------------------------
-# Frame text (SPEC section 4): ASCII or the report's own symbols.
+# Frame text (docs/FILES.md, NAME-*.txt): ASCII or the report's own symbols.
 # ---------------------------------------------------------------------------
 ASCII_NAMES: dict[str, str] = {"X": "X", "Y": "Y", "DX": "DX", "DY": "DY",
                                "CYC": "CYC", "K": "K", "KK": "KK", "GM": "GM"}

@@ -1,4 +1,4 @@
-"""Check anyone's EM-703 tapes against a TENZOR deck (issue 5).
+"""Check anyone's EM-703 tapes against a TENZOR deck.
 
 ``python -m harness verify DECK TAPEDIR`` reads the deck with the harness's
 own strict parser (:mod:`harness.deck`), finds the three tapes of each
@@ -75,7 +75,7 @@ from .tape import (
 
 #: The machine's accuracy, in units (0.01 mm): the coverage tolerance.
 TOLERANCE = 5
-#: The working field, in units, on both axes (SPEC section 1).
+#: The working field, in units, on both axes (the report's field, 1200 mm).
 FIELD = 120_000
 #: Most reasons about shapes, and most about stray frames, listed per tape
 #: (then a count of the others).

@@ -1,6 +1,6 @@
 """Seed 001: a DXF drawing to a TENZOR card deck.
 
-Source: ``shared/seeds/001_13d537a3fff5b337.txt``: Xiong Mudi, Xie Zhao,
+Source: seed 001 (docs/SOURCES.md): Xiong Mudi, Xie Zhao,
 Xiao Wenli, Xing Zhongbao, "利用 CAD 图形交换文件实现激光直写设备的运动控制"
 (motion control of a laser direct-writing device from CAD drawing exchange
 files; Changchun Institute of Optics).  Its section 3 says what a drawing

@@ -1,6 +1,6 @@
 """Seed 002: the Ural-1 computation of milling programs.
 
-Source: ``shared/seeds/002_2f255dd8f0f89766.txt``: I. N. Kosenko et al.,
+Source: seed 002 (docs/SOURCES.md): I. N. Kosenko et al.,
 "Расчет на ЭВМ «Урал-1» программы обработки деталей на станках с цифровым
 программным управлением" (OCR text; figures lost).  What is re-created:
 

@@ -1,7 +1,7 @@
 """Seed 003: a PC shell for a CNC: polylines to a binary program, sent in
 128-byte blocks with a CRC and an acknowledgement per block.
 
-Source: ``shared/seeds/003_2988a681b489db61.txt`` (Russian paper on a PC
+Source: seed 003 (docs/SOURCES.md) (Russian paper on a PC
 information-and-control shell for a CNC system; OCR text of its section on
 Fig. 5 "Блок-схема алгоритма кодирования и вывода УП"; the figures are lost
 and no byte values are given).  What it says, and what is built:

@@ -1,6 +1,6 @@
 """Seed 004: long moves split into frames, and pulse-multiplier interpolators.
 
-Source: ``shared/seeds/004_18c7e5b6b449efac.txt`` (a Russian textbook chapter
+Source: seed 004 (docs/SOURCES.md) (a Russian textbook chapter
 on NC tape codes and interpolators; OCR text, formulas and figures lost).
 Sections used:
 

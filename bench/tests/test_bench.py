@@ -1,4 +1,4 @@
-"""The benchmark (issue 7) runs and writes sane figures.
+"""The benchmark (docs/PERFORMANCE.md) runs and writes sane figures.
 
 Only the 100-pad boards, one timed run each, with the test build of TENZOR:
 the figures themselves belong in the benchmark's output and in
@@ -108,7 +108,7 @@ def test_performance_md_shows_the_recorded_run():
 @pytest.mark.skipif(not tours.lkh_available(), reason="elkai (LKH-3) is not installed")
 @pytest.mark.parametrize("dist", ["uniform", "grid"])
 def test_tenzor_tour_is_within_five_percent_of_lkh(dist, run_tenzor):
-    """Issue 7's travel target on a 1 000-pad board: the tour TENZOR punches
+    """The travel target of docs/PERFORMANCE.md on a 1 000-pad board: the tour TENZOR punches
     (read back from its simulated tapes) is at most 5 % longer than LKH-3's
     through the same items, and shorter than plain nearest neighbour's."""
     board = boards.make_board(dist, 1000)

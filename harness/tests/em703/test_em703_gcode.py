@@ -284,7 +284,7 @@ class _Spiral:
     """The arc as the machine runs it from the tape's start to the tape's end
     point: the angle a0 + sweep * s and the radius going evenly from the
     start's to the end's (equal when the end is on the circle; at most 0.01 mm
-    apart, SPEC section 3), for s from 0 to 1; in mm."""
+    apart, docs/TAPE.md), for s from 0 to 1; in mm."""
 
     def __init__(self, arc: Arc) -> None:
         self.cx, self.cy = arc.cx / 100, arc.cy / 100

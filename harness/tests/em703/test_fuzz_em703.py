@@ -1,4 +1,4 @@
-"""Fuzzing em703 (issue 5): malformed tape images, job sheets, texts to punch
+"""Fuzzing em703 (docs/ROBUSTNESS.md): malformed tape images, job sheets, texts to punch
 and arguments.
 
 Whatever it is given, ``em703`` must exit with 0, 1 or 2 (never by a

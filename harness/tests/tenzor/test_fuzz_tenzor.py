@@ -1,4 +1,4 @@
-"""Fuzzing TENZOR (issue 5): malformed and hostile decks and arguments.
+"""Fuzzing TENZOR (docs/ROBUSTNESS.md): malformed and hostile decks and arguments.
 
 Whatever it is given -- random bytes, cut cards, shifted columns, numbers at
 and past every limit, decks past every capacity, no E, empty files, CR or

@@ -2,7 +2,7 @@
 
 Each deck in examples/report/ reproduces one example of the report (section
 "Состав кадра"); the tape TENZOR punches must hold exactly the report's frames
-(as corrected in SPEC section 3), then the frame that takes the tool back to the
+(as corrected in docs/RECONSTRUCTION.md), then the frame that takes the tool back to the
 start point raised. Bytes are compared with the harness's own encoding.
 """
 from __future__ import annotations
@@ -20,7 +20,7 @@ REPORT = ROOT / "examples" / "report"
 
 
 def _return_frame(frames: list[tape.Frame]) -> list[tape.Frame]:
-    """The frame that ends a tape raised at its start (SPEC 3), found by
+    """The frame that ends a tape raised at its start (docs/TAPE.md), found by
     summing the moves by hand: every report example ends with the tool down."""
     x = y = 0
     i = 0
@@ -61,7 +61,7 @@ def test_example_tape_is_the_reports(run_tenzor, number, ref, lines, code):
 
 
 def test_saw_polyline_folds_into_the_reports_cycle(run_tenzor):
-    """Issue 3: an L card at 0,0 and sixteen + cards give Example 5's two frames."""
+    """An L card at 0,0 and sixteen + cards give Example 5's two frames."""
     proc, out = run_tenzor(REPORT / "saw-polyline.crd")
     assert proc.returncode == 0, proc.stderr.decode()
     got = tape.decode((out / "SAWLINE-cond.ptp").read_bytes()).frames
