@@ -86,3 +86,22 @@ def test_the_checker_catches_each_kind_of_outside_citation():
     for good in ("the report, Table I", "seed 002, Table 5", "Acta Optica, No. 3",
                  "docs/RECONSTRUCTION.md", "specification"):
         assert not OUTSIDE.search(good), good
+
+
+PATH_IN_CODE = re.compile(r"`([A-Za-z0-9_.-]+(?:/[A-Za-z0-9_.-]+)+/?)`")
+MADE_BY_RUNS = ("out/", "build/", ".venv/", "damaged/")
+
+
+@pytest.mark.parametrize("page", sorted(
+    str(p.relative_to(ROOT)) for p in _tracked() if p.suffix == ".md"))
+def test_paths_a_page_names_exist(page):
+    """A path written as code (`harness/verify.py`, `examples/report/`) names a
+    file or folder of the repository (or one a run makes: out/, build/)."""
+    path = ROOT / page
+    missing = []
+    for name in PATH_IN_CODE.findall(path.read_text(encoding="utf-8")):
+        if name.startswith(MADE_BY_RUNS) or name.isupper():
+            continue  # made by a run; a listing's upper-case DOCS/CARDS.MD
+        if not (ROOT / name).exists() and not (path.parent / name).exists():
+            missing.append(name)
+    assert not missing, f"{page} names paths that do not exist: {missing}"
