@@ -24,17 +24,8 @@ from dataclasses import dataclass, field
 from decimal import Decimal
 
 from . import sim
-from .shapes import (
-    TWO_PI,
-    AnyShape,
-    ArcBand,
-    Disc,
-    Layer,
-    Origin,
-    RoundRect,
-    Stroke,
-    run_shapes,
-)
+from .shapes import (TWO_PI, AnyShape, ArcBand, Disc, Layer, Origin, RoundRect, Stroke,
+                     run_shapes)
 from .tape import Frame, sequence_problem
 
 LAYERS: tuple[str, ...] = ("small", "large", "cond")

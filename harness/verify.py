@@ -52,26 +52,9 @@ import numpy as np
 
 from . import raster, sim
 from .deck import LAYERS, CardError, Package, parse_deck
-from .shapes import (
-    AnyShape,
-    ArcBand,
-    Disc,
-    Layer,
-    Origin,
-    RoundRect,
-    Stroke,
-    run_shapes,
-)
-from .tape import (
-    DIGITS_8,
-    DIGITS_K,
-    Frame,
-    Tape,
-    TapeError,
-    decode,
-    frame_rows,
-    frame_text,
-)
+from .shapes import AnyShape, ArcBand, Disc, Layer, Origin, RoundRect, Stroke, run_shapes
+from .tape import (DIGITS_8, DIGITS_K, Frame, Tape, TapeError, decode, frame_rows,
+                   frame_text)
 
 #: The machine's accuracy, in units (0.01 mm): the coverage tolerance.
 TOLERANCE = 5
