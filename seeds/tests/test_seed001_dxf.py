@@ -9,8 +9,7 @@ from pathlib import Path
 import ezdxf
 import pytest
 
-from seeds import seed001 as d2d
-from seeds import seed001 as dxfboard
+from seeds import seed001
 from seeds.__main__ import main
 from harness.deck import parse_deck
 from harness.tests.helpers import check_package
@@ -24,18 +23,18 @@ def _data_cards(deck: str) -> list[str]:
 
 
 def test_example_files_are_the_generators_output(tmp_path: Path) -> None:
-    dxfboard.write_dxf(tmp_path / "board.dxf")
+    seed001.write_dxf(tmp_path / "board.dxf")
     assert (tmp_path / "board.dxf").read_bytes() == (EXAMPLES / "board.dxf").read_bytes()
-    assert dxfboard.known_deck() == (EXAMPLES / "board-known.crd").read_text()
-    conv = d2d.convert(ezdxf.readfile(EXAMPLES / "board.dxf"))
-    deck = d2d.deck_text(conv, "BOARD", job="DXF2DECK board.dxf")
+    assert seed001.known_deck() == (EXAMPLES / "board-known.crd").read_text()
+    conv = seed001.convert(ezdxf.readfile(EXAMPLES / "board.dxf"))
+    deck = seed001.deck_text(conv, "BOARD", job="DXF2DECK board.dxf")
     assert deck == (EXAMPLES / "board.crd").read_text()
 
 
 def test_the_drawing_becomes_the_known_boards_cards() -> None:
-    conv = d2d.convert(ezdxf.readfile(EXAMPLES / "board.dxf"))
-    deck = d2d.deck_text(conv, "BOARD")
-    assert _data_cards(deck) == _data_cards(dxfboard.known_deck())
+    conv = seed001.convert(ezdxf.readfile(EXAMPLES / "board.dxf"))
+    deck = seed001.deck_text(conv, "BOARD")
+    assert _data_cards(deck) == _data_cards(seed001.known_deck())
     assert conv.ordered
     # reported with handle and layer: the spline, the point, the macro, the hint
     assert any(p.startswith("SPLINE #") and "layer OUTLINE" in p for p in conv.problems)
@@ -50,14 +49,14 @@ def test_round_trip_through_tenzor(run_tenzor, tmp_path: Path) -> None:
     50,30: TENZOR's tapes draw the known board's ideal layers within
     0.05 mm (coverage, start point, field, job sheet: test_layers' checks)."""
     drawing = tmp_path / "board.dxf"
-    dxfboard.write_dxf(drawing, offset=(50.0, 30.0))
+    seed001.write_dxf(drawing, offset=(50.0, 30.0))
     deck = tmp_path / "board.crd"
     status = main(["dxf2deck", str(drawing), "--origin", "50,30", "-o", str(deck)])
     assert status == 1                              # the spline and the point were left out
-    assert _data_cards(deck.read_text()) == _data_cards(dxfboard.known_deck())
+    assert _data_cards(deck.read_text()) == _data_cards(seed001.known_deck())
     proc, out = run_tenzor(deck)
     assert proc.returncode == 0, proc.stderr.decode("latin-1")
-    (known,) = parse_deck(dxfboard.known_deck())
+    (known,) = parse_deck(seed001.known_deck())
     problems = check_package(known, out, deck)
     assert not problems, "\n".join(problems)
 
@@ -81,11 +80,11 @@ def test_labels_order_the_items() -> None:
     msp.add_text("FIRST", dxfattribs={"insert": (5, 39)})  # line 4
     msp.add_text("1", dxfattribs={"insert": (25, 20)})   # line 2 (beyond its end)
     msp.add_text("1", dxfattribs={"insert": (5, 29)})    # a second 1: reported
-    conv = d2d.convert(doc)
+    conv = seed001.convert(doc)
     ys = [it.segments[0].y0 for it in conv.items]
     assert ys == [40, 20, 0, 30, 10]
     assert conv.ordered and any("order number 1 given twice" in p for p in conv.problems)
-    deck = d2d.deck_text(conv, "T")
+    deck = seed001.deck_text(conv, "T")
     assert deck.splitlines()[4][70] == "D"               # deck order on the P card
 
 
@@ -93,9 +92,9 @@ def test_no_labels_leaves_the_order_to_tenzor() -> None:
     doc, msp = _doc()
     msp.add_circle((1, 1), 0.8)
     msp.add_line((0, 0), (5, 0))
-    conv = d2d.convert(doc)
+    conv = seed001.convert(doc)
     assert not conv.ordered and conv.problems == []
-    p_card = d2d.deck_text(conv, "T").splitlines()[4]
+    p_card = seed001.deck_text(conv, "T").splitlines()[4]
     assert p_card.startswith("P") and len(p_card) < 71
     assert [it.kind for it in conv.items] == ["pad", "conductor"]
 
@@ -108,7 +107,7 @@ def test_widths_and_layers() -> None:
     msp.add_lwpolyline([(0, 12, 0.3, 0.3), (10, 12, 0.3, 0.3)], format="xyse")
     msp.add_lwpolyline([(0, 15, 0.3, 0.5), (10, 15, 0.5, 0.5)], format="xyse")
     msp.add_circle((3, 20), 2, dxfattribs={"layer": "RING"})
-    conv = d2d.convert(doc)
+    conv = seed001.convert(doc)
     cards = [it.cards[0] for it in conv.items]
     assert [c[30:38] for c in cards[:4]] == ["    1.20", "    2.50", "", "    0.30"]
     assert cards[4].startswith("O-") and cards[4][30:40] == "      2.00"
@@ -125,7 +124,7 @@ def test_old_style_polylines() -> None:
         v.dxf.start_width = v.dxf.end_width = 0.4
     msp.add_polyline2d([(0, 9), (10, 9)], dxfattribs={"default_start_width": 0.7,
                                                       "default_end_width": 0.2})
-    conv = d2d.convert(doc)
+    conv = seed001.convert(doc)
     assert [it.cards[0][30:38] for it in conv.items] == ["    0.70", "    0.40"]
     assert len(conv.problems) == 1 and "POLYLINE #" in conv.problems[0]
 
@@ -134,7 +133,7 @@ def test_bulges_become_chords_within_tolerance() -> None:
     """A polyline vertex with bulge 1 is a half circle (here of radius 5)."""
     doc, msp = _doc()
     msp.add_lwpolyline([(0, 0, 1), (10, 0, 0)], format="xyb")
-    (item,) = d2d.convert(doc).items
+    (item,) = seed001.convert(doc).items
     pts = [(float(c[10:20]), float(c[20:30])) for c in item.cards]
     assert pts[0] == (0, 0) and pts[-1] == (10, 0) and len(pts) > 20
     assert all(abs(math.hypot(x - 5, y) - 5) <= 0.008 for x, y in pts)
@@ -149,7 +148,7 @@ def test_arcs_both_ways_and_inserts() -> None:
     blk.add_circle((0, 0), 0.8)
     blk.add_circle((2.54, 0), 0.8)
     msp.add_blockref("PADS", (30, 30))
-    conv = d2d.convert(doc)
+    conv = seed001.convert(doc)
     a, b = conv.items[0].cards[0], conv.items[1].cards[0]
     assert a == "A-              0.00      0.00      5.00      0.00      0.00      5.00"
     # seen from below: centre (-20, 0), from (-25, 0) clockwise to (-20, 5)
@@ -165,9 +164,9 @@ def test_what_cannot_be_mapped_is_reported(tmp_path: Path) -> None:
     msp.add_circle((0, 0), 1, dxfattribs={"extrusion": (0, 1, 0)})
     path = tmp_path / "x.dxf"
     doc.saveas(path)
-    conv = d2d.convert(ezdxf.readfile(path))
+    conv = seed001.convert(ezdxf.readfile(path))
     assert len(conv.items) == 1
-    handles = list(d2d.iter_problem_handles(conv.problems))
+    handles = list(seed001.iter_problem_handles(conv.problems))
     assert len(handles) == 2 and all(h in " ".join(conv.problems) for h in handles)
     assert any(p.startswith("ELLIPSE #") and "layer ART" in p for p in conv.problems)
     assert any("tilted plane" in p for p in conv.problems)
@@ -181,6 +180,6 @@ def test_what_cannot_be_mapped_is_reported(tmp_path: Path) -> None:
 def test_origin_moves_the_start_point(origin: tuple[float, float], tmp_path: Path) -> None:
     doc, msp = _doc()
     msp.add_line((origin[0] + 1, origin[1] + 2), (origin[0] + 6, origin[1] + 2))
-    conv = d2d.convert(doc, origin)
+    conv = seed001.convert(doc, origin)
     card = conv.items[0].cards[0]
     assert card[10:30] == "      1.00      2.00"
