@@ -3,7 +3,7 @@
 !>
 !> Source: Pakhomov, JINR P11-10356 (1977), Table I "Коды координатографа
 !> ЭМ-703" and "Состав кадра"; docs/TAPE.md and docs/FILES.md. The table is
-!> transcribed here from the report, independently of legacy/tzbd.f and of
+!> transcribed here from the report, independently of legacy/tzcode.f and of
 !> harness/tape.py.
 !>
 !> A tape image holds one byte per row, the row in the low 5 bits; rows are

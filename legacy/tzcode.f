@@ -1,5 +1,5 @@
 C=======================================================================
-C     TZBD   - BLOCK DATA: THE EM-703 TAPE CODE                 (TENZOR)
+C     TZCODE - SET THE EM-703 TAPE CODE INTO /CMCOD/            (TENZOR)
 C     SOURCE:  REPORT TABLE I "KODY KOORDINATOGRAFA EM-703",
 C              DOCS/TAPE.MD.
 C     A ROW OF THE 5-TRACK TAPE IS A VALUE 0..31, TRACK K IS BIT K-1.
@@ -10,22 +10,46 @@ C     ICDIG(D,1)  DIGIT D IN THE "8" CODE: 00..07, 10, 11 (OCTAL)
 C     ICDIG(D,2)  DIGIT D IN THE "8" CODE WITH CONTROL: DIGITS 3, 5, 6
 C                 AND 9 ALSO PUNCH TRACK 5 (23, 25, 26, 31 OCTAL) SO
 C                 THAT EVERY NON-ZERO DIGIT HAS AN ODD NUMBER OF HOLES
+C     THE TABLE IS SET BY THIS ROUTINE, WHICH TENZOR CALLS FIRST, NOT BY
+C     A BLOCK DATA: A BLOCK DATA IN A LIBRARY REACHES THE PROGRAM ONLY
+C     IF THE LINKER PULLS IT IN FOR THE COMMON BLOCK, WHICH NOT EVERY
+C     LINKER DOES (THE PROGRAM WOULD PUNCH BLANK TAPES). DATA MAY NOT
+C     SET A COMMON BLOCK OUTSIDE A BLOCK DATA, SO THE TABLE IS KEPT IN
+C     LOCAL ARRAYS AND COPIED.
 C     CHANGES: SEE THE HISTORY OF THE REPOSITORY (GIT LOG)
 C=======================================================================
-      BLOCK DATA TZBD
+      SUBROUTINE TZCODE
       IMPLICIT NONE
 C     ---- /CMCOD/ THE EM-703 TAPE CODE, REPORT TABLE I ----------------
       INTEGER ICDIG(0:9,2), ICX, ICY, ICDX, ICDY, ICCYC, ICK, ICKK,
      1        ICGM, ICMIN
       COMMON /CMCOD/ ICDIG, ICX, ICY, ICDX, ICDY, ICCYC, ICK, ICKK,
      1               ICGM, ICMIN
+C     ---- LOCAL -------------------------------------------------------
+      INTEGER KDIG(0:9,2), KADR(9), D, I
+      SAVE KDIG, KADR
 C                 DIGITS 0 1 2 3 4 5 6 7  8  9  (OCTAL 00..07, 10, 11)
-      DATA ICDIG / 0, 1, 2, 3, 4, 5, 6, 7, 8, 9,
+      DATA KDIG / 0, 1, 2, 3, 4, 5, 6, 7, 8, 9,
 C                 WITH CONTROL: 3 = 23, 5 = 25, 6 = 26, 9 = 31 OCTAL
-     1             0, 1, 2,19, 4,21,22, 7, 8,25 /
-C     X = 12, Y = 13, DX = 20, DY = 21, CYC = 30 (OCTAL)
-      DATA ICX, ICY, ICDX, ICDY, ICCYC / 10, 11, 16, 17, 24 /
+     1            0, 1, 2,19, 4,21,22, 7, 8,25 /
+C     X = 12, Y = 13, DX = 20, DY = 21, CYC = 30,
 C     K = 16, KK = 17, GM = 37, MINUS = 14 (OCTAL)
-      DATA ICK, ICKK, ICGM, ICMIN / 14, 15, 31, 12 /
-C     END OF TZBD
+      DATA KADR / 10, 11, 16, 17, 24, 14, 15, 31, 12 /
+C
+      DO 20 I = 1, 2
+         DO 10 D = 0, 9
+            ICDIG(D, I) = KDIG(D, I)
+   10    CONTINUE
+   20 CONTINUE
+      ICX = KADR(1)
+      ICY = KADR(2)
+      ICDX = KADR(3)
+      ICDY = KADR(4)
+      ICCYC = KADR(5)
+      ICK = KADR(6)
+      ICKK = KADR(7)
+      ICGM = KADR(8)
+      ICMIN = KADR(9)
+      RETURN
+C     END OF TZCODE
       END
