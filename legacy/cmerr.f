@@ -84,15 +84,22 @@ C     ---- COUNT IT, AND SAY IT IF STILL UNDER THE LIMIT ---------------
       END IF
       IF (NERR .GT. MXERR + 1) RETURN
       IF (NERR .EQ. MXERR + 1) THEN
+C        (A DUMMY OF ASSUMED LENGTH, PROG, MAY BE CONCATENATED ONLY IN
+C        AN ASSIGNMENT: THE LINE IS BUILT FIRST, THEN PRINTED)
+         CALL CMITOA(MXERR, S1, L1)
          IF (LPKG .EQ. 1) THEN
-            CALL DVPRNT(' *** TOO MANY ERRORS: ONLY THE FIRST 50 OF '
-     1                  // 'THIS PACKAGE ARE LISTED')
-            CALL DVERR(PROG // ' ERROR: TOO MANY ERRORS IN PACKAGE '
-     1                 // PKFILE // ', ONLY THE FIRST 50 ARE LISTED')
+            CALL DVPRNT(' *** TOO MANY ERRORS: ONLY THE FIRST '
+     1                  // S1(1:L1) // ' OF THIS PACKAGE ARE LISTED')
+            LINE = PROG // ' ERROR: TOO MANY ERRORS IN PACKAGE '
+     1             // PKFILE // ', ONLY THE FIRST ' // S1(1:L1)
+     2             // ' ARE LISTED'
          ELSE
-            CALL DVERR(PROG // ' ERROR: TOO MANY ERRORS OUTSIDE THE '
-     1                 // 'PACKAGES, ONLY THE FIRST 50 ARE LISTED')
+            LINE = PROG // ' ERROR: TOO MANY ERRORS OUTSIDE THE '
+     1             // 'PACKAGES, ONLY THE FIRST ' // S1(1:L1)
+     2             // ' ARE LISTED'
          END IF
+         CALL CMTRIM(LINE, LL)
+         CALL DVERR(LINE(1:LL))
          RETURN
       END IF
       CALL DVERR(LINE(1:LL))

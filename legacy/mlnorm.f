@@ -46,8 +46,12 @@ C
          D = SQRT(DX * DX + DY * DY)
          VX = -DY / D * R
          VY = DX / D * R
-         IA = INT(FLOOR(VX))
-         IB = INT(FLOOR(VY))
+C        THE WHOLE NUMBERS AT OR BELOW VX AND VY (FORTRAN 77 HAS NO
+C        FLOOR: INT ROUNDS TOWARDS ZERO)
+         IA = INT(VX)
+         IF (DBLE(IA) .GT. VX) IA = IA - 1
+         IB = INT(VY)
+         IF (DBLE(IB) .GT. VY) IB = IB - 1
          EBEST = 1.0D30
          KA = NINT(VX)
          KB = NINT(VY)

@@ -27,9 +27,9 @@ C     ---- LOCAL -------------------------------------------------------
       CHARACTER*80 WORK, ARG
       CHARACTER*1 CH
       CHARACTER*26 UPPER, LOWER
+      INTEGER I, K, IA, IB, L
       DATA UPPER / 'ABCDEFGHIJKLMNOPQRSTUVWXYZ' /
       DATA LOWER / 'abcdefghijklmnopqrstuvwxyz' /
-      INTEGER I, K, IA, IB, L
 C
       LENV = 1
       IF (NENV .LT. MXENV) THEN

@@ -38,10 +38,17 @@ C     ---- /TZGEO/ THE BOARD: PADS, CONDUCTORS, CIRCLES AND ARCS -------
      1               NCON, KCV1, KCV2, KCW, KCCRD, NVTX, KVX, KVY,
      2               KVCRD, NARC, KAX, KAY, KADX, KADY, KAXS, KAYS,
      3               KAK, KACRD, LCOPEN, LGFULL
+C     ---- LOCAL -------------------------------------------------------
+      CHARACTER*160 MSG
+      INTEGER LM
 C
       IF (MOD(LGFULL / IBIT, 2) .EQ. 1) RETURN
       LGFULL = LGFULL + IBIT
-      CALL CMERR('TENZOR', NCARD, 1, 'CAPACITY EXCEEDED: ' // WHAT)
+C     (WHAT, OF ASSUMED LENGTH, MAY BE CONCATENATED ONLY IN AN
+C     ASSIGNMENT)
+      MSG = 'CAPACITY EXCEEDED: ' // WHAT
+      CALL CMTRIM(MSG, LM)
+      CALL CMERR('TENZOR', NCARD, 1, MSG(1:LM))
       RETURN
 C     END OF TZFULL
       END
