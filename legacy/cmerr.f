@@ -64,15 +64,19 @@ C
 C     ---- THE MESSAGE LINE --------------------------------------------
       CALL CMITOA(ICRD, S1, L1)
       CALL CMITOA(ICOL, S2, L2)
+C     (THE HEAD, ENDING ': ', THEN THE MESSAGE IN PLACE AFTER IT: MSG
+C     IS OF ASSUMED LENGTH AND IS NOT CONCATENATED WITH A SUBSTRING)
       IF (ICRD .LE. 0) THEN
-         LINE = PROG // ' ERROR AT THE END OF THE DECK: ' // MSG
+         LINE = PROG // ' ERROR AT THE END OF THE DECK:'
       ELSE IF (SEQ .NE. ' ') THEN
          LINE = PROG // ' ERROR CARD ' // S1(1:L1) // ' (SEQ ' //
-     1          SEQ // ') COL ' // S2(1:L2) // ': ' // MSG
+     1          SEQ // ') COL ' // S2(1:L2) // ':'
       ELSE
          LINE = PROG // ' ERROR CARD ' // S1(1:L1) // ' COL ' //
-     1          S2(1:L2) // ': ' // MSG
+     1          S2(1:L2) // ':'
       END IF
+      CALL CMTRIM(LINE, LL)
+      LINE(LL+2:) = MSG
       CALL CMTRIM(LINE, LL)
 C     ---- COUNT IT, AND SAY IT IF STILL UNDER THE LIMIT ---------------
       IF (LPKG .EQ. 1) THEN

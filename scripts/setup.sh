@@ -2,6 +2,7 @@
 # Set up everything the project needs, once; fast when all is already there.
 #   - gfortran (Debian package) compiles the FORTRAN 77 and the modern Fortran;
 #   - gerbv (Debian package) renders em703's Gerber output for a cross-check;
+#   - f2c and ftnchek (Debian packages) judge the FORTRAN 77 of legacy/;
 #   - .venv/ holds fpm and the Python packages of requirements.txt (exact pins),
 #     and the project of pyproject.toml installed editable: `python -m harness`,
 #     `python -m seeds`, `python -m bench` and `dxf2deck` then work anywhere.
@@ -14,6 +15,8 @@ cd "$(dirname "$0")/.."
 apt_packages=()
 command -v gfortran >/dev/null 2>&1 || apt_packages+=(gfortran)
 command -v gerbv >/dev/null 2>&1 || apt_packages+=(gerbv)
+command -v f2c >/dev/null 2>&1 || apt_packages+=(f2c)
+command -v ftnchek >/dev/null 2>&1 || apt_packages+=(ftnchek)
 python3 -c 'import venv, ensurepip' >/dev/null 2>&1 || apt_packages+=(python3-venv)
 
 if [ ${#apt_packages[@]} -gt 0 ]; then
