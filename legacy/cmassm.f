@@ -31,6 +31,7 @@ C     ---- /TZPKG/ THE PACKAGE: P CARD PARAMETERS, ITS CARD IMAGES ---
       CHARACTER*24 PKFILE
       CHARACTER*80 CIMG(MXCRD)
       COMMON /TZPKGC/ PKNAME, PKFILE, CIMG
+      SAVE /TZPKG/, /TZPKGC/
 C     ---- /CMFRT/ THE FRAMES OF THE TAPE BEING PUNCHED ----------------
       INTEGER MXFRM
       PARAMETER (MXFRM = 1000000)
@@ -39,6 +40,7 @@ C     ---- /CMFRT/ THE FRAMES OF THE TAPE BEING PUNCHED ----------------
      2        JFCOL(MXFRM)
       COMMON /CMFRT/ NFR, LFULL, JFX, JFY, JFDX, JFDY, JFCYC, JFK,
      1               JFCRD, JFCOL
+      SAVE /CMFRT/
 C     ---- /CMITM/ THE ITEMS OF A TAPE AND THE TOUR THROUGH THEM -------
       INTEGER MXITM
       PARAMETER (MXITM = 300000)
@@ -47,6 +49,7 @@ C     ---- /CMITM/ THE ITEMS OF A TAPE AND THE TOUR THROUGH THEM -------
      2        IORI(MXITM)
       COMMON /CMITM/ NITM, IKND, IREF, IEX, IEY, IXX, IXY, ITOUR, IPOS,
      1               IORI
+      SAVE /CMITM/
 C     ---- LOCAL -------------------------------------------------------
       INTEGER NM, I, IP, IEX1, IEY1, IXE, IYE, ICX, ICY, I1, ICRD,
      1        ICOL, IDUM1, IDUM2, NE0

@@ -18,6 +18,7 @@ C     ---- /CMFRT/ THE FRAMES OF THE TAPE BEING PUNCHED ----------------
      2        JFCOL(MXFRM)
       COMMON /CMFRT/ NFR, LFULL, JFX, JFY, JFDX, JFDY, JFCYC, JFK,
      1               JFCRD, JFCOL
+      SAVE /CMFRT/
 C     ---- LOCAL -------------------------------------------------------
       INTEGER I
 C

@@ -15,6 +15,7 @@ C     ---- /CMFRT/ THE FRAMES OF THE TAPE BEING PUNCHED ----------------
      2        JFCOL(MXFRM)
       COMMON /CMFRT/ NFR, LFULL, JFX, JFY, JFDX, JFDY, JFCYC, JFK,
      1               JFCRD, JFCOL
+      SAVE /CMFRT/
 C
       CMFEQ = JFX(I) .EQ. JFX(J) .AND. JFY(I) .EQ. JFY(J) .AND.
      1        JFDX(I) .EQ. JFDX(J) .AND. JFDY(I) .EQ. JFDY(J) .AND.

@@ -25,6 +25,7 @@ C     ---- /CMFRT/ THE FRAMES OF THE TAPE BEING PUNCHED ----------------
      2        JFCOL(MXFRM)
       COMMON /CMFRT/ NFR, LFULL, JFX, JFY, JFDX, JFDY, JFCYC, JFK,
      1               JFCRD, JFCOL
+      SAVE /CMFRT/
 C     ---- LOCAL -------------------------------------------------------
 C     VLINE, VARC  SPEEDS, 0.01 MM A MINUTE (5.5 AND 1.5 M/MIN)
       DOUBLE PRECISION VLINE, VARC, TWOPI

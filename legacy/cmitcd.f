@@ -24,6 +24,7 @@ C     ---- /TZGEO/ THE BOARD: PADS, CONDUCTORS, CIRCLES AND ARCS -------
      1               NCON, KCV1, KCV2, KCW, KCCRD, NVTX, KVX, KVY,
      2               KVCRD, NARC, KAX, KAY, KADX, KADY, KAXS, KAYS,
      3               KAK, KACRD, LCOPEN, LGFULL
+      SAVE /TZGEO/
 C     ---- /CMITM/ THE ITEMS OF A TAPE AND THE TOUR THROUGH THEM -------
       INTEGER MXITM
       PARAMETER (MXITM = 300000)
@@ -32,6 +33,7 @@ C     ---- /CMITM/ THE ITEMS OF A TAPE AND THE TOUR THROUGH THEM -------
      2        IORI(MXITM)
       COMMON /CMITM/ NITM, IKND, IREF, IEX, IEY, IXX, IXY, ITOUR, IPOS,
      1               IORI
+      SAVE /CMITM/
 C
       ICOL = 11
       IF (IKND(I) .LE. 2) THEN

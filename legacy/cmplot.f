@@ -25,11 +25,13 @@ C     ---- /CMFRT/ THE FRAMES OF THE TAPE BEING PUNCHED ----------------
      2        JFCOL(MXFRM)
       COMMON /CMFRT/ NFR, LFULL, JFX, JFY, JFDX, JFDY, JFCYC, JFK,
      1               JFCRD, JFCOL
+      SAVE /CMFRT/
 C     ---- /CMSTA/ WHAT THE SIMULATED MACHINE DID WITH EACH TAPE -------
       DOUBLE PRECISION DRAWN(3), TRAVL(3), RTIME(3), BBOX(4), PWIN(4)
       INTEGER NFRT(3), NROWT(3), IENDX, IENDY, IENDT
       COMMON /CMSTA/ DRAWN, TRAVL, RTIME, BBOX, PWIN, NFRT, NROWT,
      1               IENDX, IENDY, IENDT
+      SAVE /CMSTA/
 C     ---- LOCAL -------------------------------------------------------
       CHARACTER*12 SN
       INTEGER LN

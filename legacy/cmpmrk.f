@@ -20,6 +20,7 @@ C     ---- /CMSTA/ WHAT THE SIMULATED MACHINE DID WITH EACH TAPE -------
       INTEGER NFRT(3), NROWT(3), IENDX, IENDY, IENDT
       COMMON /CMSTA/ DRAWN, TRAVL, RTIME, BBOX, PWIN, NFRT, NROWT,
      1               IENDX, IENDY, IENDT
+      SAVE /CMSTA/
 C     ---- LOCAL -------------------------------------------------------
       INTEGER IC, IR
 C

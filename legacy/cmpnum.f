@@ -24,6 +24,7 @@ C     ---- /CMCOD/ THE EM-703 TAPE CODE, REPORT TABLE I ----------------
      1        ICGM, ICMIN
       COMMON /CMCOD/ ICDIG, ICX, ICY, ICDX, ICDY, ICCYC, ICK, ICKK,
      1               ICGM, ICMIN
+      SAVE /CMCOD/
 C     ---- LOCAL -------------------------------------------------------
       CHARACTER*12 S
       INTEGER LS, I, ID

@@ -22,16 +22,19 @@ C     ---- /CMFRT/ THE FRAMES OF THE TAPE BEING PUNCHED ----------------
      2        JFCOL(MXFRM)
       COMMON /CMFRT/ NFR, LFULL, JFX, JFY, JFDX, JFDY, JFCYC, JFK,
      1               JFCRD, JFCOL
+      SAVE /CMFRT/
 C     ---- /CMSTA/ WHAT THE SIMULATED MACHINE DID WITH EACH TAPE -------
       DOUBLE PRECISION DRAWN(3), TRAVL(3), RTIME(3), BBOX(4), PWIN(4)
       INTEGER NFRT(3), NROWT(3), IENDX, IENDY, IENDT
       COMMON /CMSTA/ DRAWN, TRAVL, RTIME, BBOX, PWIN, NFRT, NROWT,
      1               IENDX, IENDY, IENDT
+      SAVE /CMSTA/
 C     ---- /CMCOD/ THE EM-703 TAPE CODE, REPORT TABLE I ----------------
       INTEGER ICDIG(0:9,2), ICX, ICY, ICDX, ICDY, ICCYC, ICK, ICKK,
      1        ICGM, ICMIN
       COMMON /CMCOD/ ICDIG, ICX, ICY, ICDX, ICDY, ICCYC, ICK, ICKK,
      1               ICGM, ICMIN
+      SAVE /CMCOD/
 C     ---- LOCAL -------------------------------------------------------
       INTEGER NLEAD
       PARAMETER (NLEAD = 20)

@@ -29,6 +29,7 @@ C     ---- /TZPKG/ THE PACKAGE: P CARD PARAMETERS, ITS CARD IMAGES ---
       CHARACTER*24 PKFILE
       CHARACTER*80 CIMG(MXCRD)
       COMMON /TZPKGC/ PKNAME, PKFILE, CIMG
+      SAVE /TZPKG/, /TZPKGC/
 C     ---- LOCAL -------------------------------------------------------
       INTEGER N, I, JX0, JY0, JX, JY
       INTEGER CMRHD

@@ -25,6 +25,7 @@ C     ---- /TZPKG/ THE PACKAGE: P CARD PARAMETERS, ITS CARD IMAGES ---
       CHARACTER*24 PKFILE
       CHARACTER*80 CIMG(MXCRD)
       COMMON /TZPKGC/ PKNAME, PKFILE, CIMG
+      SAVE /TZPKG/, /TZPKGC/
 C     ---- /CMFRT/ THE FRAMES OF THE TAPE BEING PUNCHED ----------------
       INTEGER MXFRM
       PARAMETER (MXFRM = 1000000)
@@ -33,6 +34,7 @@ C     ---- /CMFRT/ THE FRAMES OF THE TAPE BEING PUNCHED ----------------
      2        JFCOL(MXFRM)
       COMMON /CMFRT/ NFR, LFULL, JFX, JFY, JFDX, JFDY, JFCYC, JFK,
      1               JFCRD, JFCOL
+      SAVE /CMFRT/
 C     ---- LOCAL -------------------------------------------------------
       CHARACTER*12 SN
       INTEGER LN

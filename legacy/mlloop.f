@@ -23,11 +23,13 @@ C     ---- /TZGEO/ THE BOARD: PADS, CONDUCTORS, CIRCLES AND ARCS -------
      1               NCON, KCV1, KCV2, KCW, KCCRD, NVTX, KVX, KVY,
      2               KVCRD, NARC, KAX, KAY, KADX, KADY, KAXS, KAYS,
      3               KAK, KACRD, LCOPEN, LGFULL
+      SAVE /TZGEO/
 C     ---- /MLWRK/ OFFSETS OF THE SEGMENTS OF A CONDUCTOR, ONE PASS ---
       INTEGER MXSEG
       PARAMETER (MXSEG = 200000)
       INTEGER NSEG, JNX(MXSEG), JNY(MXSEG)
       COMMON /MLWRK/ NSEG, JNX, JNY
+      SAVE /MLWRK/
 C     ---- LOCAL -------------------------------------------------------
       INTEGER IV1, IV2, I, ICRD
 C

@@ -22,6 +22,7 @@ C     ---- /CMITM/ THE ITEMS OF A TAPE AND THE TOUR THROUGH THEM -------
      2        IORI(MXITM)
       COMMON /CMITM/ NITM, IKND, IREF, IEX, IEY, IXX, IXY, ITOUR, IPOS,
      1               IORI
+      SAVE /CMITM/
 C
       CALL MTBODY(IREF(I), IKND(I), IEXP, IEYP)
       RETURN

@@ -31,6 +31,7 @@ C     ---- /TZJOB/ THE JOB: CARD COUNT, ENVELOPE, PACKAGE NAMES ------
       CHARACTER*40 JOBNAM
       CHARACTER*80 CURC
       COMMON /TZJOBC/ ENVC, PKNAMS, JOBNAM, CURC
+      SAVE /TZJOB/, /TZJOBC/
 C     ---- LOCAL -------------------------------------------------------
       INTEGER NCOL, I, IC, L1
       CHARACTER*12 S1

@@ -25,6 +25,7 @@ C     ---- /CMCOD/ THE EM-703 TAPE CODE, REPORT TABLE I ----------------
      1        ICGM, ICMIN
       COMMON /CMCOD/ ICDIG, ICX, ICY, ICDX, ICDY, ICCYC, ICK, ICKK,
      1               ICGM, ICMIN
+      SAVE /CMCOD/
 C     ---- LOCAL -------------------------------------------------------
       INTEGER KDIG(0:9,2), KADR(9), D, I
       SAVE KDIG, KADR

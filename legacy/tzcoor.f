@@ -28,6 +28,7 @@ C     ---- /TZJOB/ THE JOB: CARD COUNT, ENVELOPE, PACKAGE NAMES ------
       CHARACTER*40 JOBNAM
       CHARACTER*80 CURC
       COMMON /TZJOBC/ ENVC, PKNAMS, JOBNAM, CURC
+      SAVE /TZJOB/, /TZJOBC/
 C     ---- LOCAL -------------------------------------------------------
       CHARACTER*12 SN
       INTEGER LN

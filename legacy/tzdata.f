@@ -18,6 +18,7 @@ C     ---- /TZJOB/ THE JOB: CARD COUNT, ENVELOPE, PACKAGE NAMES ------
       CHARACTER*40 JOBNAM
       CHARACTER*80 CURC
       COMMON /TZJOBC/ ENVC, PKNAMS, JOBNAM, CURC
+      SAVE /TZJOB/, /TZJOBC/
 C     ---- LOCAL -------------------------------------------------------
       CHARACTER*1 CH
       CHARACTER*26 UPPER, LOWER

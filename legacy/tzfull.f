@@ -23,6 +23,7 @@ C     ---- /TZJOB/ THE JOB: CARD COUNT, ENVELOPE, PACKAGE NAMES ------
       CHARACTER*40 JOBNAM
       CHARACTER*80 CURC
       COMMON /TZJOBC/ ENVC, PKNAMS, JOBNAM, CURC
+      SAVE /TZJOB/, /TZJOBC/
 C     ---- /TZGEO/ THE BOARD: PADS, CONDUCTORS, CIRCLES AND ARCS -------
       INTEGER MXPAD, MXCON, MXVTX, MXARC
       PARAMETER (MXPAD = 200000, MXCON = 50000, MXVTX = 200000,
@@ -38,6 +39,7 @@ C     ---- /TZGEO/ THE BOARD: PADS, CONDUCTORS, CIRCLES AND ARCS -------
      1               NCON, KCV1, KCV2, KCW, KCCRD, NVTX, KVX, KVY,
      2               KVCRD, NARC, KAX, KAY, KADX, KADY, KAXS, KAYS,
      3               KAK, KACRD, LCOPEN, LGFULL
+      SAVE /TZGEO/
 C     ---- LOCAL -------------------------------------------------------
       CHARACTER*160 MSG
       INTEGER LM

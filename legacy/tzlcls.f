@@ -23,6 +23,7 @@ C     ---- /TZGEO/ THE BOARD: PADS, CONDUCTORS, CIRCLES AND ARCS -------
      1               NCON, KCV1, KCV2, KCW, KCCRD, NVTX, KVX, KVY,
      2               KVCRD, NARC, KAX, KAY, KADX, KADY, KAXS, KAYS,
      3               KAK, KACRD, LCOPEN, LGFULL
+      SAVE /TZGEO/
 C
       IF (LCOPEN .NE. 1) THEN
          LCOPEN = 0

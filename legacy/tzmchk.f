@@ -16,6 +16,7 @@ C     ---- /CMMAN/ MANUAL FRAMES OF M CARDS, IN DECK ORDER -------------
      1        MMDY(MXMAN), MMCYC(MXMAN), MMK(MXMAN), MMCRD(MXMAN)
       COMMON /CMMAN/ NMAN, MMTAP, MMX, MMY, MMDX, MMDY, MMCYC, MMK,
      1               MMCRD
+      SAVE /CMMAN/
 C     ---- LOCAL -------------------------------------------------------
 C     LAST(T) THE INDEX OF THE LAST M FRAME SEEN ON TAPE T IF IT OPENED
 C     A CYCLE, ELSE 0
