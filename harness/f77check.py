@@ -67,6 +67,9 @@ RULES: dict[str, str] = {
                   "dimensions)",
     "F77-BLKCOM": "no blank COMMON",
     "F77-PARAM": "a PARAMETER constant has the same type and value in every unit",
+    "F77-INTRINSIC": "only the intrinsic functions of FORTRAN 77 (no FLOOR, "
+                     "MODULO, IAND, IACHAR, SIZE, HUGE, ...: gfortran -std=legacy "
+                     "takes them, so the checker looks for them)",
     "F77-DECL": "every variable is declared (gfortran: 'has no IMPLICIT type')",
     "F77-INDEX": "the index of the directory's README.md is the one the routines give",
     "F77-COMPILE": "the file compiles (other gfortran -fsyntax-only errors)",
@@ -86,6 +89,19 @@ F90_CHARS: dict[str, str] = {
     "%": "'%' component selector",
     "&": "'&' continuation",
 }
+#: Intrinsic functions of Fortran 90 and later that FORTRAN 77 does not have
+#: (its own are in table 5 of the standard); gfortran -std=legacy takes them
+#: all, so the checker looks for them itself.
+F90_INTRINSICS: frozenset[str] = frozenset("""
+    ACHAR ADJUSTL ADJUSTR ALL ALLOCATED ANY ASSOCIATED BIT_SIZE BTEST CEILING
+    COUNT CSHIFT DIGITS DOT_PRODUCT EOSHIFT EPSILON EXPONENT FLOOR FRACTION HUGE
+    IACHAR IAND IBCLR IBITS IBSET IEOR IOR ISHFT ISHFTC KIND LBOUND LEN_TRIM
+    LOGICAL MATMUL MAXEXPONENT MAXLOC MAXVAL MERGE MINEXPONENT MINLOC MINVAL
+    MODULO NEAREST NOT NULL PACK PRECISION PRESENT PRODUCT RADIX RANGE REPEAT
+    RESHAPE RRSPACING SCALE SCAN SELECTED_INT_KIND SELECTED_REAL_KIND
+    SET_EXPONENT SHAPE SIZE SPACING SPREAD SUM TINY TRANSFER TRANSPOSE TRIM
+    UBOUND UNPACK VERIFY ERF ERFC GAMMA HYPOT NORM2 POPCNT NEW_LINE
+    """.split())
 F90_PAIRS: dict[str, str] = {
     "::": "'::' in a declaration",
     "==": "relational operator '==' (use .EQ.)",
@@ -426,8 +442,19 @@ class _FileChecker:
 
     def _expr_names(self, st: _Statement, a: int, b: int) -> None:
         masked = _DOTTED.sub(lambda m: " " * len(m.group()), st.s[a:b])
+        unit = self.unit
         for m in _EXPR_NAME.finditer(masked):
-            self._name(st, a + m.start(), m.group(), "name")
+            name = m.group()
+            self._name(st, a + m.start(), name, "name")
+            if (name in F90_INTRINSICS and masked[m.end():m.end() + 1] == "("
+                    and unit is not None and name not in unit.types
+                    and name not in unit.dims):
+                self.add(*st.at(a + m.start()), "F77-INTRINSIC",
+                         f"{name} is an intrinsic function of Fortran 90, not of "
+                         "FORTRAN 77")
+        k = masked.find("(/")
+        if k >= 0:
+            self.add(*st.at(a + k), "F77-F90", "array constructor (/ ... /)")
 
     # -- units ---------------------------------------------------------------
     def _open_unit(self, kind: str, name: str | None, st: _Statement) -> None:

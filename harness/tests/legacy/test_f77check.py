@@ -295,7 +295,7 @@ def test_extensions(tmp_path: Path, line: str) -> None:
     (["      INTEGER IPADX", "      COMMON /CMPADS1/ IPADX"], "CMPADS1"),
     (["      INTEGER MAXPADS", "      PARAMETER (MAXPADS = 5)"], "MAXPADS"),
     (["      CALL CMPUNCH(1)"], "CMPUNCH"),
-    (["      S = ADJUSTL(S)"], "ADJUSTL"),
+    (["      S = CMADJST(S)"], "CMADJST"),
     (["      IF (LENTRIM(S) .GT. 0) I = 1"], "LENTRIM"),
     (["      DO 10 I = 1, NUMBERS", "   10 CONTINUE"], "NUMBERS"),
 ])
@@ -533,3 +533,22 @@ def test_a_readme_whose_index_is_stale_fails_the_check(tmp_path: Path, capsys) -
     assert "F77-INDEX" in capsys.readouterr().out
     assert main(["f77check", "--index", str(tmp_path)]) == 0
     assert "| [CMONE](cmone.f) |" in (tmp_path / "README.md").read_text()
+
+
+@pytest.mark.parametrize("expr", ["MODULO(I, 2)", "IAND(I, 3)", "IACHAR(S(1:1))", "SIZE(J)",
+                                  "HUGE(I)", "INT(FLOOR(1.5))"])
+def test_fortran_90_intrinsics_are_caught(tmp_path: Path, expr: str) -> None:
+    write(tmp_path, "cmone.f", subroutine("CMONE", [f"      I = {expr}"]))
+    found = only(tmp_path, "F77-INTRINSIC")
+    assert found[0].line == 6 and "not of FORTRAN 77" in found[0].message
+
+
+def test_a_declared_function_of_the_same_name_is_not_an_intrinsic(tmp_path: Path) -> None:
+    write(tmp_path, "cmone.f", subroutine("CMONE", ["      INTEGER HUGE", "      I = HUGE(1)"]))
+    assert check_dir(tmp_path, compiler=None) == []
+
+
+def test_an_array_constructor_is_fortran_90(tmp_path: Path) -> None:
+    write(tmp_path, "cmone.f", subroutine("CMONE", ["      INTEGER K(2)", "      K = (/ 1, 2 /)"]))
+    found = only(tmp_path, "F77-F90")
+    assert "array constructor" in found[0].message
