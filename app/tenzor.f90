@@ -2,7 +2,8 @@
 !> It does what the Dubna monitor did for the program: finds the deck, sets up
 !> the card reader, the printer and the punches (src/monitor/), calls
 !> the FORTRAN 77 entry point and turns its verdict into an exit status:
-!> 0 all packages punched, 1 the deck had errors, 2 usage or I/O trouble.
+!> 0 all packages punched, 1 the deck had errors, 2 usage or I/O trouble (or a
+!> broken build: TENZOR found its code table unset).
 program tenzor_shell
     use, intrinsic :: iso_fortran_env, only: error_unit, output_unit
     use base_args, only: get_arg
@@ -69,7 +70,7 @@ program tenzor_shell
 
     call tenzor(icode, irc)
 
-    if (dev_io_failed()) stop 2, quiet=.true.
+    if (dev_io_failed() .or. irc == 2) stop 2, quiet=.true.
     if (irc /= 0) stop 1, quiet=.true.
 
 contains

@@ -65,7 +65,12 @@ C     MXSTK) IS REPORTED HERE, ONCE, AND THE TAPE IS NOT BUILT FURTHER
 C     ------------------------------------------------------------------
       NE0 = NPERR
       DO 10 I = 1, NITM
-         CALL BODY(I, IEX(I), IEY(I))
+C        THE ENTRY POINT COMES BACK IN LOCALS: THE BODY ROUTINE ALSO
+C        SEES /CMITM/, AND AN ARGUMENT IN A COMMON BLOCK THAT THE CALLEE
+C        SEES MAY NOT BE DEFINED THERE (X3.9-1978 15.9.3.6)
+         CALL BODY(I, IDUM1, IDUM2)
+         IEX(I) = IDUM1
+         IEY(I) = IDUM2
          CALL CMDISP(NM + 1, NFR, DX, DY)
          IXX(I) = IEX(I) + NINT(DX)
          IXY(I) = IEY(I) + NINT(DY)

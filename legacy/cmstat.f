@@ -33,6 +33,7 @@ C     ---- LOCAL -------------------------------------------------------
       CHARACTER*128 LINE
       CHARACTER*12 WHAT(3), SUF(3)
       CHARACTER*12 S1
+      CHARACTER*14 F1, F2, F3
       INTEGER L, L1, LS
       CHARACTER*1 TNAME(3)
       DATA TNAME / 'S', 'B', 'L' /
@@ -46,14 +47,20 @@ C
       CALL DVPRNT(' TAPE ' // TNAME(IU) // '  ' // WHAT(IU) //
      1   'FILE ' // PKFILE(1:L) // SUF(IU)(1:LS) // '   TOOL ' //
      2   S1(1:L1) // ' MM')
-      WRITE (LINE, 100) NFRT(IU), NROWT(IU), NROWT(IU) * 2.54D0 / 1.0D3
+C     THE DECIMALS ARE WRITTEN BY CMFDP, NOT BY AN F EDIT DESCRIPTOR:
+C     THE LISTING IS THEN THE SAME ON EVERY PROCESSOR
+      CALL CMFDP(NROWT(IU) * 2.54D0 / 1.0D3, F1(1:11))
+      WRITE (LINE, 100) NFRT(IU), NROWT(IU), F1(1:11)
       CALL DVPRNT(LINE)
-      WRITE (LINE, 110) DRAWN(IU), TRAVL(IU), RTIME(IU)
+      CALL CMFDP(DRAWN(IU), F1)
+      CALL CMFDP(TRAVL(IU), F2)
+      CALL CMFDP(RTIME(IU), F3(1:10))
+      WRITE (LINE, 110) F1, F2, F3(1:10)
       CALL DVPRNT(LINE)
       RETURN
   100 FORMAT (8X, 'FRAMES', I9, '   ROWS', I10, '   TAPE LENGTH',
-     1        F11.2, ' M')
-  110 FORMAT (8X, 'DRAWN', F14.2, ' MM   TRAVEL', F14.2,
-     1        ' MM   RUN TIME', F10.2, ' MIN')
+     1        A11, ' M')
+  110 FORMAT (8X, 'DRAWN', A14, ' MM   TRAVEL', A14,
+     1        ' MM   RUN TIME', A10, ' MIN')
 C     END OF CMSTAT
       END

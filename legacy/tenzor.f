@@ -14,7 +14,9 @@ C     ICODEA  (INPUT)  INTEGER  TAPE CODE ASKED BY THE OPERATOR: 0 = AS
 C                               THE P CARD SAYS, 1 = "8", 2 = "8" WITH
 C                               CONTROL
 C     IRC     (OUTPUT) INTEGER  0 = ALL PACKAGES PUNCHED, 1 = THE DECK
-C                               HAD ERRORS (SEE THE LISTINGS)
+C                               HAD ERRORS (SEE THE LISTINGS), 2 = THE
+C                               TAPE CODE TABLE WAS NOT SET (A FAULT OF
+C                               THE BUILD; NOTHING IS READ OR PUNCHED)
 C     CHANGES: SEE THE HISTORY OF THE REPOSITORY (GIT LOG)
 C=======================================================================
       SUBROUTINE TENZOR(ICODEA, IRC)
@@ -45,6 +47,12 @@ C     ---- /TZPKG/ THE PACKAGE: P CARD PARAMETERS, ITS CARD IMAGES ---
       CHARACTER*80 CIMG(MXCRD)
       COMMON /TZPKGC/ PKNAME, PKFILE, CIMG
       SAVE /TZPKG/, /TZPKGC/
+C     ---- /CMCOD/ THE EM-703 TAPE CODE, REPORT TABLE I ----------------
+      INTEGER ICDIG(0:9,2), ICX, ICY, ICDX, ICDY, ICCYC, ICK, ICKK,
+     1        ICGM, ICMIN
+      COMMON /CMCOD/ ICDIG, ICX, ICY, ICDX, ICDY, ICCYC, ICK, ICKK,
+     1               ICGM, ICMIN
+      SAVE /CMCOD/
 C     ---- LOCAL -------------------------------------------------------
 C     ISTATE  1 = BEFORE THE DATA (THE ENVELOPE), 2 = A NAME CARD IS
 C             DUE (AFTER *EXECUTE OR C), 3 = IN A PACKAGE, 4 = AFTER
@@ -55,6 +63,16 @@ C             THE E CARD, 5 = AFTER *END FILE (NOTHING MORE IS READ)
       CHARACTER*1 CH
 C
       CALL TZCODE
+C     A TAPE PUNCHED FROM AN UNSET TABLE WOULD BE ALL BLANK ROWS AND
+C     LOOK LIKE A GOOD ONE: THE END CODE (37 OCTAL) AND TWO DISTINCT
+C     ADDRESSES PROVE THE TABLE IS THERE
+      IF (ICGM .NE. 31 .OR. ICX .EQ. ICY .OR. ICDIG(9, 1) .NE. 9) THEN
+         CALL DVERR('TENZOR: THE TAPE CODE TABLE /CMCOD/ IS NOT SET;'
+     1      // ' NOTHING IS PUNCHED. THE BUILD IS AT FAULT: TZCODE'
+     2      // ' MUST SET IT')
+         IRC = 2
+         RETURN
+      END IF
       NCARD = 0
       JOBERR = 0
       ICODEO = ICODEA

@@ -22,10 +22,15 @@ program test_legacy_monitor
             character(len=*), intent(out) :: str
             integer, intent(out) :: lstr
         end subroutine cmfmm
+        subroutine cmfdp(x, str)
+            double precision, intent(in) :: x
+            character(len=*), intent(out) :: str
+        end subroutine cmfdp
     end interface
 
     call test_cmnum()
     call test_text()
+    call test_decimals()
     call test_card_reader()
     if (summary() /= 0) stop 1, quiet=.true.
 
@@ -84,6 +89,38 @@ contains
         call cmfmm(-123456, s, l)
         call check_str(s(1:l), '-1234.56', 'cmfmm -123456')
     end subroutine test_text
+
+    !> CMFDP: the listing's decimals, right-justified, always with the zero
+    !> before the point, asterisks when the value does not fit.
+    subroutine test_decimals()
+        character(len=14) :: s14
+        character(len=10) :: s10
+        character(len=4) :: s4
+        call cmfdp(0.7d0, s10)
+        call check_str(s10, '      0.70', 'cmfdp 0.7: the zero before the point')
+        call cmfdp(0d0, s10)
+        call check_str(s10, '      0.00', 'cmfdp 0')
+        call cmfdp(0.004999d0, s10)
+        call check_str(s10, '      0.00', 'cmfdp rounds down below a half hundredth')
+        call cmfdp(0.005001d0, s10)
+        call check_str(s10, '      0.01', 'cmfdp rounds up above a half hundredth')
+        call cmfdp(780.87d0, s14)
+        call check_str(s14, '        780.87', 'cmfdp 780.87')
+        call cmfdp(9999.996d0, s14)
+        call check_str(s14, '      10000.00', 'cmfdp carries into the high part')
+        call cmfdp(10000.05d0, s14)
+        call check_str(s14, '      10000.05', 'cmfdp keeps the zeros of the low part')
+        call cmfdp(123456789.25d0, s14)
+        call check_str(s14, '  123456789.25', 'cmfdp past the range of a 32-bit hundredth')
+        call cmfdp(-1.5d0, s10)
+        call check_str(s10, '     -1.50', 'cmfdp negative')
+        call cmfdp(-0.001d0, s10)
+        call check_str(s10, '      0.00', 'cmfdp: no minus zero')
+        call cmfdp(12.5d0, s4)
+        call check_str(s4, '****', 'cmfdp: too wide is asterisks')
+        call cmfdp(1.0d20, s14)
+        call check_str(s14, repeat('*', 14), 'cmfdp: far too wide is asterisks')
+    end subroutine test_decimals
 
     subroutine test_card_reader()
         character(len=*), parameter :: path = 'build/test_deck.crd'

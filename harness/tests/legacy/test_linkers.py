@@ -7,7 +7,8 @@ and by gold. Each program runs every deck of examples/; every file it writes
 (tapes, frame text, listing, job sheet) must be byte for byte what the
 tenzor under test writes. A code table that reaches the program only
 through one linker's rules (gold does not pull an archive member to define a
-COMMON block) would punch blank tapes here.
+COMMON block) would punch blank tapes here; and a build whose code table is
+never set must stop with a message, not punch blank tapes.
 """
 from __future__ import annotations
 
@@ -30,8 +31,8 @@ def _have_linker(name: str) -> bool:
 
 
 @pytest.fixture(scope="module")
-def built(tmp_path_factory) -> dict[str, Path]:
-    """tenzor linked by each linker: linker -> program."""
+def parts(tmp_path_factory) -> tuple[Path, list[str]]:
+    """legacy/ compiled into a static library, and the shell's objects."""
     gfortran = shutil.which("gfortran")
     if gfortran is None:
         pytest.fail("gfortran is not on PATH: the set-up installs it", pytrace=False)
@@ -49,6 +50,14 @@ def built(tmp_path_factory) -> dict[str, Path]:
         subprocess.run([gfortran, "-c", f"-J{work}", str(ROOT / src), "-o", str(obj)],
                        check=True, capture_output=True)
         shell.append(str(obj))
+    return work, shell
+
+
+@pytest.fixture(scope="module")
+def built(parts) -> dict[str, Path]:
+    """tenzor linked by each linker: linker -> program."""
+    gfortran = shutil.which("gfortran")
+    work, shell = parts
     programs = {}
     for linker in LINKERS:
         if not _have_linker(linker):
@@ -81,3 +90,23 @@ def test_every_linker_builds_a_tenzor_that_punches_the_same_bytes(built, linker,
         assert not differ, f"{deck.relative_to(ROOT)}: linked by {linker}, {differ} differ"
         tapes = [name for name in want if name.endswith(".ptp")]
         assert tapes and all(any(want[t][20:]) for t in tapes), "blank tapes"
+
+
+def test_a_build_without_its_code_table_stops_with_a_message(parts, tmp_path):
+    """TZCODE replaced by a routine that sets nothing: TENZOR must refuse to
+    punch (exit 2, a message naming the table), not write blank tapes."""
+    work, shell = parts
+    stub = tmp_path / "tzcode.f"
+    stub.write_text("      SUBROUTINE TZCODE\n      RETURN\n      END\n")
+    obj = tmp_path / "tzcode.o"
+    subprocess.run(["gfortran", "-c", str(stub), "-o", str(obj)], check=True,
+                   capture_output=True)
+    exe = tmp_path / "tenzor-unset"
+    subprocess.run(["gfortran", *shell, str(obj), str(work / "liblegacy.a"), "-o", str(exe)],
+                   check=True, capture_output=True)
+    out = tmp_path / "out"
+    proc = subprocess.run([str(exe), str(DECKS[0]), "-o", str(out)], capture_output=True,
+                          text=True, timeout=60)
+    assert proc.returncode == 2, proc.stderr
+    assert "CODE TABLE /CMCOD/ IS NOT SET" in proc.stderr
+    assert not (out.exists() and any(out.glob("*.ptp"))), "tapes punched"
