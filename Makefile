@@ -6,6 +6,9 @@
 #   make examples  punch every deck of examples/ into out/ (docs/TOOLS.md's examples)
 #   make bench     the benchmarks of docs/PERFORMANCE.md (about 4 minutes; BENCH_ARGS=--quick
 #                  for the 100- and 1 000-pad boards): a table, and out/bench/bench.csv, .svg
+#   make f2c       TENZOR built from legacy/ by f2c, gcc and libf2c: build/f2c/tenzor
+#   make flang     TENZOR built from legacy/ by LLVM flang (installs Debian flang-16,
+#                  about 800 MB): build/flang/tenzor
 # and, for CI (.ci/run):
 #   make test-checks   the Fortran tests and every test that runs tenzor or em703,
 #                      again, on a build with gfortran's run-time checks
@@ -24,7 +27,7 @@ CHECKS := -fcheck=all -ffpe-trap=invalid,zero,overflow -ftrapv
 # The built program is run directly: `fpm run` would add its own progress lines.
 TENZOR = "$$(fpm run --runner echo tenzor 2>/dev/null | tail -n 1)"
 
-.PHONY: demo examples test test-checks bench setup build
+.PHONY: demo examples test test-checks bench setup build f2c flang
 
 setup:
 	@bash scripts/setup.sh
@@ -48,6 +51,15 @@ test-checks: setup
 	TENZOR_EXE="$$(fpm run --profile debug --flag "$(CHECKS)" --runner echo tenzor 2>/dev/null | tail -n 1)" \
 	EM703_EXE="$$(fpm run --profile debug --flag "$(CHECKS)" --runner echo em703 2>/dev/null | tail -n 1)" \
 		python -m pytest -m "tenzor or em703"
+
+# The other compilers of legacy/ (scripts/judges.sh); make test compares their
+# tapes, listings and job sheets with the gfortran build's, byte for byte.
+f2c: setup
+	@bash scripts/judges.sh f2c
+
+flang: setup
+	@WITH_FLANG=1 bash scripts/setup.sh
+	@bash scripts/judges.sh flang
 
 # bench builds the release profile of TENZOR itself (fpm build --profile release).
 bench: setup

@@ -2,7 +2,10 @@
 # Set up everything the project needs, once; fast when all is already there.
 #   - gfortran (Debian package) compiles the FORTRAN 77 and the modern Fortran;
 #   - gerbv (Debian package) renders em703's Gerber output for a cross-check;
-#   - f2c and ftnchek (Debian packages) judge the FORTRAN 77 of legacy/;
+#   - f2c and ftnchek (Debian packages) judge the FORTRAN 77 of legacy/, and
+#     f2c with gcc and libf2c (libf2c2-dev) builds TENZOR a second way;
+#   - with WITH_FLANG=1 (`make flang`, CI), flang-16 (Debian, about 800 MB)
+#     builds TENZOR a third way;
 #   - .venv/ holds fpm and the Python packages of requirements.txt (exact pins),
 #     and the project of pyproject.toml installed editable: `python -m harness`,
 #     `python -m seeds`, `python -m bench` and `dxf2deck` then work anywhere.
@@ -17,6 +20,11 @@ command -v gfortran >/dev/null 2>&1 || apt_packages+=(gfortran)
 command -v gerbv >/dev/null 2>&1 || apt_packages+=(gerbv)
 command -v f2c >/dev/null 2>&1 || apt_packages+=(f2c)
 command -v ftnchek >/dev/null 2>&1 || apt_packages+=(ftnchek)
+[ -f /usr/include/f2c.h ] || apt_packages+=(libf2c2-dev)
+command -v gcc >/dev/null 2>&1 || apt_packages+=(gcc)
+if [ "${WITH_FLANG:-0}" = 1 ]; then
+    command -v flang-new-16 >/dev/null 2>&1 || apt_packages+=(flang-16)
+fi
 python3 -c 'import venv, ensurepip' >/dev/null 2>&1 || apt_packages+=(python3-venv)
 
 if [ ${#apt_packages[@]} -gt 0 ]; then

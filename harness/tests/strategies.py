@@ -1,6 +1,7 @@
 """Hypothesis strategies of the test suites: random frame lists (tapes for the
-decoders, simulators and translators) and random small boards (decks that
-TENZOR must accept), written with the oracle's own tape and card writers."""
+decoders, simulators and translators), random small boards (decks that
+TENZOR must accept), written with the oracle's own tape and card writers,
+and hostile decks (for the fuzz suites and the comparison of builds)."""
 
 from __future__ import annotations
 
@@ -9,6 +10,7 @@ import math
 from hypothesis import assume
 from hypothesis import strategies as st
 
+from harness import cards
 from harness.cards import (CardPackage, a_card, d_card, l_card, m_card, o_card, p_card,
                            plus_card)
 from harness.tape import Frame, on_circle
@@ -214,3 +216,190 @@ def st_package(draw: st.DrawFn, name: str | None = None) -> CardPackage:
     for g in groups:
         cards += g
     return CardPackage(name, cards)
+
+
+# ---------------------------------------------------------------------------
+# Hostile decks.
+# ---------------------------------------------------------------------------
+GOOD_M = cards.m_card("L", dx=100, k=10)
+
+#: Numbers at and past the limits, as field text (None: blank).
+F10 = ["9999999.99", "-9999999.99", "      0.01", "     -0.01", "      0.00", "  120000.00",
+       " -120000.00", "  119999.99", "   1200.00", "    600.00", "  10000.00", "  10000.01",
+       "9999999999", "-999999999", " 999999999", "        .5", "         .", "         -",
+       "     1.5E2", "    1 2.50", "1250      ", "   0.001  ", "+000000.01", "     -0.  "]
+F8 = ["99999.99", "-9999.99", "    0.01", "    0.02", "   20.00", "   20.01", "    0.00",
+      "99999999", "   -0.50", "    1.60", "  1200.0", "     .  "]
+INT = ["999", "-99", "  0", "  1", "100", "9999", "99999", "-9999", " 1 ", "1.0", "  2",
+       "1000000", "-0"]
+#: (first column, width, pool) of each card type's fields.
+FIELDS: dict[str, list[tuple[int, int, list[str]]]] = {
+    "P": [(11, 10, F10), (21, 10, F10), (31, 8, F8), (39, 8, F8), (47, 8, F8), (55, 8, F8),
+          (63, 3, INT), (66, 3, INT), (70, 1, list("8K9 ")), (71, 1, list("OD? "))],
+    "D": [(11, 10, F10), (21, 10, F10), (31, 8, F8), (39, 8, F8), (47, 4, INT),
+          (51, 10, F10), (61, 10, F10)],
+    "L": [(11, 10, F10), (21, 10, F10), (31, 8, F8)],
+    "+": [(11, 10, F10), (21, 10, F10)],
+    "O": [(2, 1, list("+- ")), (11, 10, F10), (21, 10, F10), (31, 10, F10)],
+    "A": [(2, 1, list("+- ")), (11, 10, F10), (21, 10, F10), (31, 10, F10), (41, 10, F10),
+          (51, 10, F10), (61, 10, F10)],
+    "M": [(2, 1, list("SBL Q")), (11, 10, F10), (21, 10, F10), (31, 10, F10), (41, 10, F10),
+          (51, 5, INT), (56, 5, INT + ["   10", "   20", "   11", "   13"])],
+}
+
+
+@st.composite
+def st_extreme_card(draw: st.DrawFn) -> str:
+    """A card of a known type whose fields are blank, sane or extreme."""
+    kind = draw(st.sampled_from(sorted(FIELDS)))
+    cols = [" "] * 72
+    cols[0] = kind
+    for col, width, pool in FIELDS[kind]:
+        if draw(st.integers(0, 3)) == 0:
+            continue
+        text = draw(st.sampled_from(pool))[-width:].rjust(width)
+        cols[col - 1:col - 1 + width] = list(text)
+    return "".join(cols).rstrip()
+
+
+@st.composite
+def st_extreme_deck(draw: st.DrawFn) -> bytes:
+    """One or two packages of extreme cards, otherwise well formed."""
+    pkgs = []
+    for n in range(draw(st.integers(1, 2))):
+        body = draw(st.lists(st_extreme_card(), min_size=1, max_size=8))
+        if draw(st.booleans()):
+            body.insert(0, draw(st_extreme_card().filter(lambda c: c[0] == "P")))
+        pkgs.append(cards.CardPackage(f"X{n}", body))
+    return cards.deck(pkgs, envelope=draw(st.booleans())).encode("ascii")
+
+
+#: Lengths in units near the limits: the 120000 mm reach, the 10 m radius.
+BIG = [11_999_999, 12_000_000, 12_000_001, 999_999, 1_000_000, 1_000_001, 120_000, 60_000,
+       99_999_999]
+
+
+@st.composite
+def st_length(draw: st.DrawFn, lo: int = -99_999_999, hi: int = 99_999_999) -> int:
+    v = draw(st.one_of(st.sampled_from(BIG + [0, 1, 2, 3]), st.integers(lo, hi)))
+    if lo < 0 and draw(st.booleans()):
+        v = -v
+    return max(lo, min(hi, v))
+
+
+@st.composite
+def st_stress_deck(draw: st.DrawFn) -> bytes:
+    """Well-formed cards whose values are huge, tiny or at a limit, at the
+    machine's scales, so that they reach the generators (M703T, M703L),
+    the tour and the field check, not only the card reader."""
+    scale = draw(st.sampled_from([(1, 100), (1, 10), (1, 1), (100, 1), (1, 2)]))
+    tool = st.integers(1, 2000)
+    w1, w2, w3 = draw(tool), draw(tool), draw(tool)
+    body = [cards.p_card(draw(st.integers(0, 120000)), draw(st.integers(0, 120000)), w1, w2, w3,
+                         draw(st.integers(1, 120000)), scale,
+                         draw(st.sampled_from(["8", "K"])), draw(st.sampled_from(["O", "D"])))]
+    size = st.integers(1, 99_999)
+    for _ in range(draw(st.integers(1, 6))):
+        kind = draw(st.sampled_from("DDLOAM"))
+        if kind == "D":
+            body.append(cards.d_card(draw(st_length()), draw(st_length()), draw(size),
+                                     draw(st.one_of(st.none(), size)),
+                                     draw(st.sampled_from([None, 2, 9999, 500])),
+                                     draw(st_length(-99_999_999, 99_999_999)),
+                                     draw(st_length(-99_999_999, 99_999_999))))
+        elif kind == "L":
+            body.append(cards.l_card(draw(st_length()), draw(st_length()),
+                                     draw(st.one_of(st.none(), size))))
+            for _ in range(draw(st.integers(1, 4))):
+                body.append(cards.plus_card(draw(st_length()), draw(st_length())))
+        elif kind == "O":
+            body.append(cards.o_card(draw(st.sampled_from("+-")), draw(st_length()),
+                                     draw(st_length()), draw(st_length(1))))
+        elif kind == "A":
+            r = draw(st.sampled_from([1_000_000, 999_999, 600_000, 1]))
+            body.append(cards.a_card(draw(st.sampled_from("+-")), 0, 0, r, 0,
+                                     draw(st.sampled_from([0, -r, r])),
+                                     draw(st.sampled_from([r, -r, 0]))))
+        else:
+            body.append(cards.m_card(draw(st.sampled_from("SBL")), draw(st_length()),
+                                     draw(st_length()), draw(st_length()), draw(st_length()),
+                                     draw(st.sampled_from([None, 2, 99999])),
+                                     draw(st.sampled_from([10, 20, 11, 13]))))
+    return cards.deck([cards.CardPackage("STRESS", body)], envelope=False).encode("ascii")
+
+
+@st.composite
+def st_valid_deck(draw: st.DrawFn) -> str:
+    pkgs = draw(st.lists(st_package(), min_size=1, max_size=3))
+    for n, p in enumerate(pkgs):
+        p.name = f"{p.name[:8]}N{n}"
+    return cards.deck(pkgs, envelope=draw(st.booleans()))
+
+
+MUTATIONS = ("cut", "shift", "unshift", "shift-all", "delete", "duplicate", "swap", "field",
+             "byte", "crlf", "cr-only", "long", "nul", "truncate-file", "drop-e")
+
+
+@st.composite
+def st_mutated_deck(draw: st.DrawFn) -> bytes:
+    """A deck TENZOR accepts, broken by 1-4 mutations (see MUTATIONS)."""
+    lines = draw(st_valid_deck()).split("\n")[:-1]
+    raw: bytes | None = None
+    for _ in range(draw(st.integers(1, 4))):
+        what = draw(st.sampled_from(MUTATIONS))
+        i = draw(st.integers(0, max(0, len(lines) - 1))) if lines else 0
+        if not lines:
+            lines = [""]
+        if what == "cut":
+            lines[i] = lines[i][:draw(st.integers(0, 80))]
+        elif what == "shift":
+            lines[i] = " " * draw(st.integers(1, 10)) + lines[i]
+        elif what == "unshift":
+            lines[i] = lines[i][draw(st.integers(1, 10)):]
+        elif what == "shift-all":
+            k = draw(st.integers(-2, 2))
+            lines = [(" " * k + ln) if k > 0 else ln[-k:] for ln in lines]
+        elif what == "delete":
+            del lines[i]
+        elif what == "duplicate":
+            lines.insert(i, lines[i])
+        elif what == "swap":
+            j = draw(st.integers(0, len(lines) - 1))
+            lines[i], lines[j] = lines[j], lines[i]
+        elif what == "field":
+            pool = draw(st.sampled_from([F10, F8, INT]))
+            text = draw(st.sampled_from(pool))
+            col = draw(st.integers(2, 72))
+            ln = lines[i].ljust(col - 1 + len(text))
+            lines[i] = ln[:col - 1] + text + ln[col - 1 + len(text):]
+        elif what == "byte":
+            col = draw(st.integers(0, 90))
+            ch = chr(draw(st.integers(0, 255)))
+            lines[i] = lines[i][:col] + ch + lines[i][col + 1:]
+        elif what == "long":
+            lines.insert(i, draw(st.sampled_from(["M", "D", " ", "*"])) * 100000)
+        elif what == "nul":
+            lines[i] = lines[i] + "\x00" * draw(st.integers(1, 3))
+        elif what == "drop-e":
+            lines = [ln for ln in lines if not ln.startswith("E")]
+        elif what in ("crlf", "cr-only", "truncate-file"):
+            pass
+        raw = None
+        if what == "crlf":
+            raw = "\r\n".join(lines).encode("latin-1") + b"\r\n"
+        elif what == "cr-only":
+            raw = "\r".join(lines).encode("latin-1") + b"\r"
+        elif what == "truncate-file":
+            full = "\n".join(lines).encode("latin-1")
+            raw = full[:draw(st.integers(0, len(full)))]
+    if raw is None:
+        raw = ("\n".join(lines) + "\n").encode("latin-1")
+    return raw
+
+
+@st.composite
+def st_card_soup(draw: st.DrawFn) -> bytes:
+    """Lines of characters TENZOR cares about, in no order."""
+    alphabet = st.sampled_from(list(" 0123456789.-+PDLOAMCEK8*#_") + ["\r", "\t", "\x00"])
+    lines = draw(st.lists(st.text(alphabet, max_size=90), max_size=30))
+    return "\n".join(lines).encode("latin-1")
