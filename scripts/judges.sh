@@ -1,12 +1,16 @@
 #!/usr/bin/env bash
-# usage: scripts/judges.sh f2c|flang
+# usage: scripts/judges.sh f2c|flang|gfortran [bfd|gold]
 #
 # TENZOR built from legacy/ by a second or third compiler, into
 # build/f2c/tenzor (`make f2c`) or build/flang/tenzor (`make flang`). Each is
 # a judge of legacy/: a program that relied on anything gfortran adds to
 # FORTRAN 77 would not compile, or would punch other bytes
 # (harness/tests/legacy/test_judges.py compares every output with the
-# gfortran build's).
+# gfortran build's). `gfortran bfd` and `gfortran gold` build it with gfortran
+# as fpm does (each routine an object in a static library) and link it with
+# the named linker, into build/gfortran-bfd/ or build/gfortran-gold/
+# (harness/tests/legacy/test_linkers.py). Each build keeps its objects:
+# shell/ (the modern side) and obj/ (legacy/).
 #
 #   f2c    the FORTRAN 77 to C translator of AT&T Bell Laboratories (f2c -A
 #          -u), then gcc and the libf2c run-time library; the classic route
@@ -23,21 +27,28 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 
 judge=${1:-}
+linker=${2:-}
 case "$judge" in
     f2c)   tools=(f2c gcc gfortran) ;;
-    flang) tools=(flang-new-16 gfortran) ;;
-    *) echo "usage: scripts/judges.sh f2c|flang" >&2; exit 2 ;;
+    flang) tools=(flang-new-16 gcc gfortran) ;;
+    gfortran)
+        case "$linker" in
+            bfd|gold) tools=(gcc gfortran "ld.$linker") ;;
+            *) echo "usage: scripts/judges.sh gfortran bfd|gold" >&2; exit 2 ;;
+        esac ;;
+    *) echo "usage: scripts/judges.sh f2c|flang|gfortran [bfd|gold]" >&2; exit 2 ;;
 esac
 for tool in "${tools[@]}"; do
     command -v "$tool" >/dev/null || {
         echo "$judge build: $tool is missing (make $judge installs it)" >&2; exit 2; }
 done
 
-out=build/$judge
+out=build/$judge${linker:+-$linker}
 work=$out.new
 # the modern sources of the tenzor program, in the order their modules need them
-shell=(src/base/base_os.f90 src/monitor/monitor_devices.f90 src/monitor/devices.f90
-       src/base/base_args.f90 app/tenzor.f90)
+shell=(src/base/base_error.f90 src/base/base_os.f90 src/base/base_files.f90
+       src/base/base_io.f90 src/base/base_sha256.f90 src/monitor/monitor_devices.f90
+       src/monitor/devices.f90 src/base/base_args.f90 app/tenzor.f90)
 rm -rf "$work"
 mkdir -p "$work/obj" "$work/mod" "$work/shell"
 
@@ -73,6 +84,12 @@ if [ "$judge" = f2c ]; then
     # the archive, not the shared library: the program runs where libf2c2 is
     # not installed, and libf2c's own main() is never linked (the shell's is)
     runtime=(/usr/lib/"$(gcc -print-multiarch)"/libf2c.a -lm)
+elif [ "$judge" = gfortran ]; then
+    for src in legacy/*.f; do
+        gfortran -O2 -ffixed-form -fimplicit-none -c "$src" \
+            -o "$work/obj/$(basename "${src%.f}").o"
+    done
+    runtime=()
 else
     lib=$(dirname "$(readlink -f "$(command -v flang-new-16)")")/../lib
     # one file a process, as many at once as there are processors (flang's
@@ -90,7 +107,15 @@ for src in "${shell[@]}"; do
     gfortran -O2 -ffp-contract=off -J"$work/mod" -c "$src" \
         -o "$work/shell/$(basename "${src%.f90}").o"
 done
-gfortran -o "$work/tenzor" "$work"/shell/*.o "$work"/obj/*.o "${runtime[@]}"
+gcc -O2 -c src/base/base_files.c -o "$work/shell/base_files_c.o"
+if [ "$judge" = gfortran ]; then
+    # legacy/ as fpm links it: a static library, each routine pulled in only
+    # when something calls it
+    ar rcs "$work/liblegacy.a" "$work"/obj/*.o
+    gfortran -fuse-ld="$linker" -o "$work/tenzor" "$work"/shell/*.o "$work/liblegacy.a"
+else
+    gfortran -o "$work/tenzor" "$work"/shell/*.o "$work"/obj/*.o "${runtime[@]}"
+fi
 rm -rf "$out"
 mv "$work" "$out"
-echo "$judge build: $out/tenzor"
+echo "$judge${linker:+ $linker} build: $out/tenzor"

@@ -20,6 +20,8 @@ program test_em703_tools
     use em703_jobsheet, only: job_t, read_job, parse_scale, machine_scale
     use base_io, only: write_text
     use em703_split, only: split_move
+    use base_sha256, only: sha256_hex
+    use base_files, only: write_whole, same_file
     implicit none
 
     call test_decode_report_example3()
@@ -40,6 +42,8 @@ program test_em703_tools
     call test_jobsheet()
     call test_split_seed004()
     call test_text_helpers()
+    call test_sha256()
+    call test_whole_files()
     if (summary() /= 0) stop 1, quiet=.true.
 
 contains
@@ -589,5 +593,53 @@ contains
         call check(sum(dxs) == -7 .and. sum(dys) == 3 .and. all(abs(dxs) <= 2), &
                    'split: a negative move sums back and keeps the limit')
     end subroutine test_split_seed004
+
+    !> SHA-256: the standard's test vectors, the padding's edge lengths, every
+    !> byte value (the digits are those of sha256sum).
+    subroutine test_sha256()
+        character(len=768) :: every
+        integer :: i
+        call check_str(sha256_hex(''), &
+            'e3b0c44298fc1c149afbf4c8996fb92427ae41e4649b934ca495991b7852b855', 'sha256 of nothing')
+        call check_str(sha256_hex('abc'), &
+            'ba7816bf8f01cfea414140de5dae2223b00361a396177a9cb410ff61f20015ad', 'sha256 abc')
+        call check_str(sha256_hex('abcdbcdecdefdefgefghfghighijhijkijkljklmklmnlmnomnopnopq'), &
+            '248d6a61d20638b8e5c026930c3e6039a33ce45964ff2167f6ecedd419db06c1', 'sha256 of two blocks')
+        call check_str(sha256_hex(repeat('a', 1000000)), &
+            'cdc76e5c9914fb9281a1c7e284d73e67f1809a48a497200e046d39ccc7112cd0', 'sha256 of a million a')
+        call check_str(sha256_hex(repeat('x', 55)), &
+            'd5e285683cd4efc02d021a5c62014694958901005d6f71e89e0989fac77e4072', 'sha256 55 bytes: one block')
+        call check_str(sha256_hex(repeat('x', 56)), &
+            '04c26261370ee7541549d16dee320c723e3fd14671e66a099afe0a377c16888e', 'sha256 56 bytes: two blocks')
+        call check_str(sha256_hex(repeat('x', 64)), &
+            '7ce100971f64e7001e8fe5a51973ecdfe1ced42befe7ee8d5fd6219506b5393c', 'sha256 64 bytes')
+        do i = 0, 767
+            every(i + 1:i + 1) = achar(mod(i, 256))
+        end do
+        call check_str(sha256_hex(every), &
+            'f3a25aa93aa2fbba28d79260535bbd6a5eb0fc1c24a8b0f04e12b484c1dfe363', 'sha256 of every byte value')
+    end subroutine test_sha256
+
+    !> write_whole: the file is replaced whole; a target in a missing
+    !> directory fails with the reason and leaves nothing.
+    subroutine test_whole_files()
+        character(len=:), allocatable :: msg
+        character(len=16) :: got
+        integer :: u, ios
+        call write_whole('test_whole.tmpfile', 'first version', msg)
+        call check(len(msg) == 0, 'write_whole writes a file')
+        call write_whole('test_whole.tmpfile', 'second', msg)
+        call check(len(msg) == 0, 'write_whole replaces a file')
+        open(newunit=u, file='test_whole.tmpfile', access='stream', form='unformatted', &
+             action='read', iostat=ios)
+        got = ''
+        read(u, iostat=ios) got(1:6)
+        close(u, status='delete')
+        call check_str(got, 'second', 'the file holds the new bytes only')
+        call write_whole('no/such/dir/file.txt', 'x', msg)
+        call check(index(msg, 'No such file') > 0, 'a missing directory: ' // msg)
+        call check(same_file('fpm.toml', './fpm.toml'), 'same_file: two spellings')
+        call check(.not. same_file('fpm.toml', 'README.md'), 'same_file: two files')
+    end subroutine test_whole_files
 
 end program test_em703_tools

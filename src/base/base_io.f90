@@ -1,12 +1,13 @@
 !> File input and output of the modern tools: a whole file as bytes or as text,
-!> a file written under a temporary name and renamed when complete (so a
-!> failed run never leaves half a file), text to standard output. Every
+!> a file written whole or not at all (base_files: a fresh temporary file,
+!> fsynced, renamed; a failed run never leaves half a file), text to standard
+!> output. Every
 !> statement that can fail has iostat and iomsg; failures come back as an
 !> error_t naming the file.
 module base_io
     use, intrinsic :: iso_fortran_env, only: output_unit, error_unit
     use base_error, only: error_t, new_error
-    use base_os, only: rename_file, remove_file
+    use base_files, only: write_whole
     implicit none
     private
     public :: read_bytes, read_text, write_bytes, write_text, print_text, dir_of, say
@@ -85,41 +86,16 @@ contains
         call write_text(path, text, err)
     end subroutine write_bytes
 
-    !> Write a string as the whole file: to PATH.tmp first, then renamed.
+    !> Write a string as the whole file, or not at all (base_files): a failure
+    !> leaves the file as it was.
     subroutine write_text(path, text, err)
         character(len=*), intent(in) :: path
         character(len=*), intent(in) :: text
         type(error_t), allocatable, intent(out) :: err
-        character(len=:), allocatable :: tmp
-        character(len=256) :: msg
-        integer :: u, ios
-        logical :: ok
-        tmp = path // '.tmp'
-        open(newunit=u, file=tmp, access='stream', form='unformatted', status='replace', &
-             action='write', iostat=ios, iomsg=msg)
-        if (ios /= 0) then
-            call new_error(err, 'cannot write: ' // trim(msg))
-            err%file = path
-            return
-        end if
-        if (len(text) > 0) write(u, iostat=ios, iomsg=msg) text
-        if (ios /= 0) then
-            close(u, status='delete', iostat=ios)
-            call new_error(err, 'cannot write: ' // trim(msg))
-            err%file = path
-            return
-        end if
-        close(u, iostat=ios, iomsg=msg)
-        if (ios /= 0) then
-            call remove_file(tmp)
-            call new_error(err, 'cannot write: ' // trim(msg))
-            err%file = path
-            return
-        end if
-        call rename_file(tmp, path, ok)
-        if (.not. ok) then
-            call remove_file(tmp)
-            call new_error(err, 'cannot write: rename from ' // tmp // ' failed')
+        character(len=:), allocatable :: msg
+        call write_whole(path, text, msg)
+        if (len(msg) > 0) then
+            call new_error(err, 'cannot write: ' // msg)
             err%file = path
         end if
     end subroutine write_text

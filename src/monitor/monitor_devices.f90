@@ -5,17 +5,20 @@
 !> operator's console (standard error).
 !>
 !> A package's output is held in memory until the package is closed; then it is
-!> written to temporary files and renamed into place, so a failed package never
-!> leaves a partial tape and never touches the good tapes of an earlier run.
-!> A write counts as done only when the file on disk has every byte (the
-!> Fortran run-time library does not report every failed write, e.g. a full
-!> disk).
+!> staged in fresh temporary files (written in full, fsynced) and renamed into
+!> place under the directory's lock, the job sheet last with the size and
+!> SHA-256 of every other file; a failed package never leaves a partial tape
+!> and never touches the good tapes of an earlier run.
 !>
 !> The deck is read byte for byte, whatever kind of file it is (a regular
 !> file, a pipe, a FIFO, standard input), so every way in reads the same cards.
 module monitor_devices
     use, intrinsic :: iso_fortran_env, only: error_unit, output_unit
-    use base_os, only: make_dirs, rename_file, remove_file, is_dir, read_fd
+    use base_os, only: make_dirs, is_dir, read_fd
+    use base_files, only: stage_file, commit_file, discard_file, lock_dir, unlock_dir, &
+                          same_file
+    use base_io, only: say
+    use base_sha256, only: sha256_hex
     implicit none
     private
 
@@ -39,7 +42,7 @@ module monitor_devices
     !> The largest deck read, in bytes (1 GiB).
     integer, parameter :: max_deck = 1073741824
 
-    character(len=:), allocatable :: deck, deck_label, out_dir, pkg_name
+    character(len=:), allocatable :: deck, deck_label, deck_path, out_dir, pkg_name
     integer :: deck_pos = 1
     logical :: io_failed = .false.
     type(byte_buffer) :: tape(3), text(3), job, listing
@@ -100,6 +103,7 @@ contains
         character(len=256) :: iomsg
         ok = .false.
         deck_label = path
+        deck_path = path
         open(newunit=u, file=path, access='stream', form='unformatted', action='read', &
              status='old', iostat=ios, iomsg=iomsg)
         if (ios /= 0) then
@@ -217,59 +221,102 @@ contains
     end subroutine dev_job
 
     !> Close the package: the listing always, the tapes, texts and job sheet only
-    !> when keep is true. Every file is written under a temporary name first; the
-    !> renames happen only when all of them were written in full and none of the
-    !> final names is a directory. When a write fails, no file of the package is
-    !> changed, and the console says so.
+    !> when keep is true. The job sheet comes last and records the size and the
+    !> SHA-256 of every other file of the package, so that a tool can tell a
+    !> package whose files do not belong together. Every file is first staged
+    !> (base_files: a fresh temporary file, written in full and fsynced); only
+    !> when all are staged, and none of the final names is a directory or the
+    !> deck itself, are they renamed into place, under the output directory's
+    !> lock, so that two runs into one directory never mix their files. When
+    !> anything fails, no file of the package is changed, and the console says so.
     subroutine dev_close(keep)
         logical, intent(in) :: keep
-        character(len=:), allocatable :: base
-        character(len=4096) :: final(8)
-        integer :: nfiles, i, j
+        character(len=:), allocatable :: base, msg
+        type(byte_buffer) :: sheet
+        character(len=4096) :: final(8), staged(8)
+        integer :: nfiles, i, j, lockfd
         logical :: ok
         base = out_dir // '/' // pkg_name
         nfiles = 0
         ok = .true.
-        call stage(base // '.lst', listing, ok)
+        call add(base // '.lst')
         if (keep) then
             do i = 1, 3
-                call stage(base // '-' // trim(tape_suffix(i)) // '.ptp', tape(i), ok)
-                call stage(base // '-' // trim(tape_suffix(i)) // '.txt', text(i), ok)
+                call add(base // '-' // trim(tape_suffix(i)) // '.ptp')
+                call add(base // '-' // trim(tape_suffix(i)) // '.txt')
             end do
-            call stage(base // '.job', job, ok)
+            call add(base // '.job')
         end if
         do i = 1, nfiles
-            if (ok .and. is_dir(trim(final(i)))) then
-                write(error_unit, '(a)') 'tenzor: cannot write ' // trim(final(i)) // &
-                    ': a directory has that name'
+            if (.not. ok) exit
+            if (is_dir(trim(final(i)))) then
+                call say('tenzor: cannot write ' // trim(final(i)) // ': a directory has that name')
                 ok = .false.
+            else if (allocated(deck_path)) then
+                if (same_file(deck_path, trim(final(i)))) then
+                    call say('tenzor: cannot write ' // trim(final(i)) // ': it is the deck ' // &
+                             'being read; choose another output directory (-o)')
+                    ok = .false.
+                end if
             end if
         end do
+        staged = ''
+        if (ok) then
+            call stage(1, listing)
+            if (keep) then
+                do i = 1, 3
+                    call stage(2 * i, tape(i))
+                    call stage(2 * i + 1, text(i))
+                end do
+                ! the job sheet: TENZOR's lines, then the package's files
+                sheet = job
+                call sheet%line('listing = ' // pkg_name // '.lst')
+                call sheet%line('listing.bytes = ' // itoa(listing%n))
+                call sheet%line('listing.sha256 = ' // sha256_hex(bytes_of(listing)))
+                do i = 1, 3
+                    call sheet%line(trim(tape_suffix(i)) // '.bytes = ' // itoa(tape(i)%n))
+                    call sheet%line(trim(tape_suffix(i)) // '.sha256 = ' // &
+                                    sha256_hex(bytes_of(tape(i))))
+                    call sheet%line(trim(tape_suffix(i)) // '.text_bytes = ' // itoa(text(i)%n))
+                    call sheet%line(trim(tape_suffix(i)) // '.text_sha256 = ' // &
+                                    sha256_hex(bytes_of(text(i))))
+                end do
+                call stage(8, sheet)
+            end if
+        end if
         if (.not. ok) then
             do i = 1, nfiles
-                call remove_file(temp_name(trim(final(i))))
+                call discard_file(trim(staged(i)))
             end do
             io_failed = .true.
-            write(error_unit, '(a)') 'tenzor: ' // pkg_name // ': no file written; ' // &
-                'earlier files of this name are left as they were'
+            call say('tenzor: ' // pkg_name // ': no file written; ' // &
+                     'earlier files of this name are left as they were')
             write(output_unit, '(a)') pkg_name // ': cannot write its files; earlier ' // &
                 'files of this name are left as they were'
             return
         end if
+        call lock_dir(out_dir, lockfd, msg)
+        if (len(msg) > 0) then
+            call say('tenzor: cannot lock ' // out_dir // ' (' // msg // '); writing ' // &
+                     'without the lock')
+            lockfd = -1
+        end if
         do i = 1, nfiles
-            call rename_file(temp_name(trim(final(i))), trim(final(i)), ok)
-            if (.not. ok) then
-                write(error_unit, '(a)') 'tenzor: cannot rename into ' // trim(final(i)) // &
-                    '; ' // pkg_name // ': the files before it in the list are new, ' // &
-                    'the others are left as they were'
-                do j = i, nfiles
-                    call remove_file(temp_name(trim(final(j))))
+            call commit_file(trim(staged(i)), trim(final(i)), msg)
+            if (len(msg) > 0) then
+                call say('tenzor: cannot rename into ' // trim(final(i)) // ' (' // msg // &
+                         '); ' // pkg_name // ': the files before it in the list are new, ' // &
+                         'the others are left as they were')
+                do j = i + 1, nfiles
+                    call discard_file(trim(staged(j)))
                 end do
+                call unlock_dir(lockfd)
                 io_failed = .true.
                 write(output_unit, '(a)') pkg_name // ': cannot write all its files'
                 return
             end if
         end do
+        call unlock_dir(lockfd)
         if (keep) then
             write(output_unit, '(a)') pkg_name // ': tapes ' // base // '-small.ptp ' // &
                 base // '-large.ptp ' // base // '-cond.ptp, listing ' // base // '.lst'
@@ -278,45 +325,46 @@ contains
                 base // '.lst'
         end if
     contains
-        subroutine stage(path, buf, ok)
+        subroutine add(path)
             character(len=*), intent(in) :: path
-            type(byte_buffer), intent(in) :: buf
-            logical, intent(inout) :: ok
-            integer :: u, ios, ios2, nbytes
-            character(len=256) :: iomsg
-            if (.not. ok) return
             nfiles = nfiles + 1
             final(nfiles) = path
-            iomsg = ''
-            open(newunit=u, file=temp_name(path), access='stream', form='unformatted', &
-                 status='replace', action='write', iostat=ios, iomsg=iomsg)
-            if (ios == 0) then
-                if (buf%n > 0) write(u, iostat=ios, iomsg=iomsg) buf%data(1:buf%n)
-                close(u, iostat=ios2)
-                if (ios == 0) ios = ios2
-                if (ios == 0) then
-                    inquire(file=temp_name(path), size=nbytes)
-                    if (nbytes /= buf%n) then
-                        ios = -1
-                        iomsg = 'the file on disk is short (is the disk full?)'
-                    end if
-                end if
-            end if
-            if (ios /= 0) then
-                write(error_unit, '(a)') 'tenzor: cannot write ' // path // ': ' // trim(iomsg)
+        end subroutine add
+
+        subroutine stage(k, buf)
+            integer, intent(in) :: k
+            type(byte_buffer), intent(in) :: buf
+            character(len=:), allocatable :: tmp, why
+            if (.not. ok) return
+            call stage_file(trim(final(k)), bytes_of(buf), tmp, why)
+            if (len(why) > 0) then
+                call say('tenzor: cannot write ' // trim(final(k)) // ': ' // why)
                 ok = .false.
+            else
+                staged(k) = tmp
             end if
         end subroutine stage
     end subroutine dev_close
 
-    !> The temporary name of an output file: a dot file beside it.
-    function temp_name(path) result(tmp)
-        character(len=*), intent(in) :: path
-        character(len=:), allocatable :: tmp
-        integer :: slash
-        slash = index(path, '/', back=.true.)
-        tmp = path(1:slash) // '.' // path(slash + 1:) // '.tmp'
-    end function temp_name
+    !> The bytes a buffer holds.
+    function bytes_of(buf) result(b)
+        type(byte_buffer), intent(in) :: buf
+        character(len=:), allocatable :: b
+        if (buf%n > 0) then
+            b = buf%data(1:buf%n)
+        else
+            b = ''
+        end if
+    end function bytes_of
+
+    !> An integer as decimal text.
+    function itoa(n) result(s)
+        integer, intent(in) :: n
+        character(len=:), allocatable :: s
+        character(len=12) :: buf
+        write(buf, '(i0)') n
+        s = trim(buf)
+    end function itoa
 
     logical function dev_io_failed()
         dev_io_failed = io_failed

@@ -5,6 +5,8 @@ from __future__ import annotations
 
 import re
 
+import subprocess
+
 import pytest
 
 from harness import tape
@@ -200,27 +202,57 @@ def _snapshot(out):
     return {p.name: (p.read_bytes() if p.is_file() else None) for p in sorted(out.iterdir())}
 
 
-@pytest.mark.skipif(not __import__("os").path.exists("/dev/full"), reason="no /dev/full")
-def test_disk_full_mid_package_leaves_earlier_files_untouched(run_tenzor, tmp_path):
-    """A write that fails after some files of the package were written (the
-    small-pad tape's temporary file leads to /dev/full: every write fails
-    with ENOSPC, which the Fortran run-time library does not report): no
-    file of the package changes, no temporary file is left, and both
-    standard error and standard output say so."""
+def _file_size_limit(limit: int):
+    """For subprocess: files may grow to `limit` bytes; a longer write fails
+    with EFBIG (SIGXFSZ ignored), as a full disk fails with ENOSPC."""
+    def apply() -> None:
+        import resource
+        import signal
+        signal.signal(signal.SIGXFSZ, signal.SIG_IGN)
+        resource.setrlimit(resource.RLIMIT_FSIZE, (limit, limit))
+    return apply
+
+
+def test_failed_write_mid_package_leaves_earlier_files_untouched(tenzor_exe, tmp_path):
+    """A write that fails part-way through the package (files may not grow
+    past 2 000 bytes: the listing's write fails, as on a full disk): no file
+    of the package changes, no temporary file is left, and both standard
+    error and standard output say so."""
     out = tmp_path / "keep"
+    deck = tmp_path / "deck.crd"
     good = "BAD\n" + P + "\n" + card(c1="M", c31=f10("1.00"), c56="   10") + "\nE\n"
-    assert run_tenzor(good, out=out)[0].returncode == 0
+    deck.write_text(good)
+    assert subprocess.run([str(tenzor_exe), str(deck), "-o", str(out)]).returncode == 0
     before = _snapshot(out)
-    (out / ".BAD-small.ptp.tmp").symlink_to("/dev/full")
-    proc, _ = run_tenzor(good.replace("1.00", "2.00"), out=out)
+    deck.write_text(good.replace("1.00", "2.00"))
+    proc = subprocess.run([str(tenzor_exe), str(deck), "-o", str(out)], capture_output=True,
+                          preexec_fn=_file_size_limit(2000), restore_signals=False,
+                          timeout=60)
     assert proc.returncode == 2
     err = proc.stderr.decode()
-    assert "tenzor: cannot write " in err and "BAD-small.ptp: the file on disk is short" in err
+    assert f"tenzor: cannot write {out}/BAD.lst: File too large" in err
     assert "BAD: no file written; earlier files of this name are left as they were" in err
     assert "BAD: cannot write its files; earlier files of this name are left as they were" \
         in proc.stdout.decode()
     assert _snapshot(out) == before, "a file of the failed package changed"
     assert "Fortran runtime" not in err
+
+
+def test_a_link_planted_in_the_output_directory_is_not_followed(run_tenzor, tmp_path):
+    """Symbolic links planted under every name a temporary file could take in
+    an older version, and a dot file of each output: TENZOR writes through
+    none of them; the files they point to keep their bytes."""
+    out = tmp_path / "keep"
+    out.mkdir()
+    victim = tmp_path / "victim"
+    victim.write_text("precious")
+    for name in ["BAD.lst", "BAD-small.ptp", "BAD.job"]:
+        (out / f".{name}.tmp").symlink_to(victim)
+    good = "BAD\n" + P + "\n" + card(c1="M", c31=f10("1.00"), c56="   10") + "\nE\n"
+    proc, _ = run_tenzor(good, out=out)
+    assert proc.returncode == 0, proc.stderr
+    assert victim.read_text() == "precious"
+    assert (out / "BAD-small.ptp").is_file() and not (out / "BAD-small.ptp").is_symlink()
 
 
 def test_directory_in_the_way_leaves_earlier_files_untouched(run_tenzor, tmp_path):

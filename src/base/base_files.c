@@ -1,0 +1,162 @@
+/*
+ * Whole-file output for the Fortran programs (base_files.f90 binds these).
+ *
+ * A file is written whole or not at all: its bytes go to a new temporary
+ * file in the target's directory, created exclusively (O_CREAT | O_EXCL: a
+ * name that exists, a symbolic link planted there included, is never opened;
+ * another name is tried), written in full, fsynced and closed; only then is
+ * it renamed over the target, and the directory is fsynced. A failure leaves
+ * the target as it was and removes the temporary file.
+ *
+ * C, not Fortran, because these services need the C library's own
+ * constants (open flags, errno), which differ from system to system.
+ * Each function returns 0 or an errno value; base_files.f90 turns that into
+ * a message with strerror.
+ */
+#define _POSIX_C_SOURCE 200809L
+#include <errno.h>
+#include <signal.h>
+#include <fcntl.h>
+#include <stdio.h>
+#include <string.h>
+#include <sys/file.h>
+#include <sys/stat.h>
+#include <sys/types.h>
+#include <unistd.h>
+
+/* the directory part of path, "." for a bare name */
+static void dir_of(const char *path, char *dir, size_t cap)
+{
+    const char *slash = strrchr(path, '/');
+    size_t n;
+    if (slash == NULL) {
+        snprintf(dir, cap, ".");
+        return;
+    }
+    n = (size_t)(slash - path);
+    if (n == 0) n = 1;              /* "/name": the root */
+    if (n >= cap) n = cap - 1;
+    memcpy(dir, path, n);
+    dir[n] = '\0';
+}
+
+/* Create a fresh temporary file beside path; its name goes to tmp (cap
+ * bytes). Returns the descriptor, or -1 with errno set. */
+static int create_temp(const char *path, char *tmp, size_t cap)
+{
+    static unsigned long counter = 0;
+    const char *slash = strrchr(path, '/');
+    const char *base = slash ? slash + 1 : path;
+    size_t dirlen = slash ? (size_t)(slash - path) + 1 : 0;
+    int tries, fd;
+    for (tries = 0; tries < 1000; tries++) {
+        int n = snprintf(tmp, cap, "%.*s.%s.%ld.%lu.tmp", (int)dirlen, path, base,
+                         (long)getpid(), counter++);
+        if (n < 0 || (size_t)n >= cap) {
+            errno = ENAMETOOLONG;
+            return -1;
+        }
+        fd = open(tmp, O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
+        if (fd >= 0 || errno != EEXIST) return fd;
+    }
+    errno = EEXIST;
+    return -1;
+}
+
+static int write_all(int fd, const char *data, size_t n)
+{
+    while (n > 0) {
+        ssize_t w = write(fd, data, n);
+        if (w < 0) {
+            if (errno == EINTR) continue;
+            return errno;
+        }
+        if (w == 0) return EIO;
+        data += w;
+        n -= (size_t)w;
+    }
+    return 0;
+}
+
+/* Write n bytes to a fresh temporary file beside path (its name to tmp) and
+ * fsync it. On failure the temporary file is removed. */
+int em_stage(const char *path, const char *data, size_t n, char *tmp, size_t cap)
+{
+    int fd, rc;
+    struct stat st;
+    /* a file past the size limit (ulimit -f) is an error of write(2), EFBIG,
+     * like a full disk, not the signal that would end the program (and that
+     * the Fortran run-time library turns into a backtrace) */
+    signal(SIGXFSZ, SIG_IGN);
+    fd = create_temp(path, tmp, cap);
+    if (fd < 0) return errno;
+    rc = write_all(fd, data, n);
+    if (rc == 0 && fsync(fd) != 0) rc = errno;
+    /* the bytes on disk, counted again: a short file is never renamed */
+    if (rc == 0 && (fstat(fd, &st) != 0 || (size_t)st.st_size != n)) rc = EIO;
+    if (close(fd) != 0 && rc == 0) rc = errno;
+    if (rc != 0) unlink(tmp);
+    return rc;
+}
+
+/* Rename a staged file over its target; fsync the target's directory. */
+int em_commit(const char *tmp, const char *path)
+{
+    char dir[4096];
+    int dfd;
+    if (rename(tmp, path) != 0) {
+        int rc = errno;
+        unlink(tmp);
+        return rc;
+    }
+    dir_of(path, dir, sizeof dir);
+    dfd = open(dir, O_RDONLY | O_CLOEXEC);
+    if (dfd >= 0) {
+        fsync(dfd);                 /* not every file system can; the rename stands */
+        close(dfd);
+    }
+    return 0;
+}
+
+/* Remove a staged file that will not be committed. */
+void em_discard(const char *tmp)
+{
+    unlink(tmp);
+}
+
+/* Take the lock of a directory (flock on the directory itself, so no lock
+ * file is left behind), waiting for another run that holds it. *fd is the
+ * lock's descriptor. */
+int em_lock(const char *dir, int *fd)
+{
+    *fd = open(dir, O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+    if (*fd < 0) return errno;
+    while (flock(*fd, LOCK_EX) != 0) {
+        if (errno != EINTR) {
+            int rc = errno;
+            close(*fd);
+            *fd = -1;
+            return rc;
+        }
+    }
+    return 0;
+}
+
+void em_unlock(int fd)
+{
+    if (fd >= 0) close(fd);         /* closing releases the lock */
+}
+
+/* 1 when a and b name the same existing file (device and inode), else 0. */
+int em_same_file(const char *a, const char *b)
+{
+    struct stat sa, sb;
+    if (stat(a, &sa) != 0 || stat(b, &sb) != 0) return 0;
+    return sa.st_dev == sb.st_dev && sa.st_ino == sb.st_ino;
+}
+
+/* The C library's text for an errno value, copied into msg (cap bytes). */
+void em_strerror(int rc, char *msg, size_t cap)
+{
+    snprintf(msg, cap, "%s", strerror(rc));
+}

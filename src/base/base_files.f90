@@ -1,0 +1,150 @@
+!> Whole-file output: every file a program writes is written whole or not at
+!> all (base_files.c does the system calls). A new file goes to a temporary
+!> name beside its target, created exclusively (never an existing name, never
+!> through a planted symbolic link), is written in full, fsynced, and renamed
+!> over the target; a failure leaves the target as it was and no temporary
+!> file. A set of files (a TENZOR package) is staged first and renamed
+!> together, under the directory's lock, so that runs into one directory never
+!> mix their files.
+module base_files
+    use, intrinsic :: iso_c_binding, only: c_int, c_char, c_null_char, c_size_t
+    implicit none
+    private
+    public :: write_whole, stage_file, commit_file, discard_file
+    public :: lock_dir, unlock_dir, same_file
+
+    interface
+        function c_stage(path, data, n, tmp, cap) bind(c, name='em_stage') result(rc)
+            import :: c_int, c_char, c_size_t
+            character(kind=c_char), intent(in) :: path(*), data(*)
+            integer(c_size_t), value :: n, cap
+            character(kind=c_char), intent(out) :: tmp(*)
+            integer(c_int) :: rc
+        end function c_stage
+        function c_commit(tmp, path) bind(c, name='em_commit') result(rc)
+            import :: c_int, c_char
+            character(kind=c_char), intent(in) :: tmp(*), path(*)
+            integer(c_int) :: rc
+        end function c_commit
+        subroutine c_discard(tmp) bind(c, name='em_discard')
+            import :: c_char
+            character(kind=c_char), intent(in) :: tmp(*)
+        end subroutine c_discard
+        function c_lock(dir, fd) bind(c, name='em_lock') result(rc)
+            import :: c_int, c_char
+            character(kind=c_char), intent(in) :: dir(*)
+            integer(c_int), intent(out) :: fd
+            integer(c_int) :: rc
+        end function c_lock
+        subroutine c_unlock(fd) bind(c, name='em_unlock')
+            import :: c_int
+            integer(c_int), value :: fd
+        end subroutine c_unlock
+        function c_same_file(a, b) bind(c, name='em_same_file') result(rc)
+            import :: c_int, c_char
+            character(kind=c_char), intent(in) :: a(*), b(*)
+            integer(c_int) :: rc
+        end function c_same_file
+        subroutine c_strerror(rc, msg, cap) bind(c, name='em_strerror')
+            import :: c_int, c_char, c_size_t
+            integer(c_int), value :: rc
+            character(kind=c_char), intent(out) :: msg(*)
+            integer(c_size_t), value :: cap
+        end subroutine c_strerror
+    end interface
+
+    integer, parameter :: path_cap = 4352
+
+contains
+
+    !> Write data as the whole file path. msg is empty when it is done, else
+    !> the reason (the file is then as it was before).
+    subroutine write_whole(path, data, msg)
+        character(len=*), intent(in) :: path, data
+        character(len=:), allocatable, intent(out) :: msg
+        character(len=:), allocatable :: tmp
+        call stage_file(path, data, tmp, msg)
+        if (len(msg) == 0) call commit_file(tmp, path, msg)
+    end subroutine write_whole
+
+    !> Write data to a new temporary file beside path, fsynced; tmp is its name.
+    subroutine stage_file(path, data, tmp, msg)
+        character(len=*), intent(in) :: path, data
+        character(len=:), allocatable, intent(out) :: tmp, msg
+        character(len=path_cap) :: buf
+        integer(c_int) :: rc
+        buf = ''
+        if (len(data) > 0) then
+            rc = c_stage(path // c_null_char, data, int(len(data), c_size_t), buf, &
+                         int(path_cap, c_size_t))
+        else
+            rc = c_stage(path // c_null_char, ' ', 0_c_size_t, buf, int(path_cap, c_size_t))
+        end if
+        tmp = c_string(buf)
+        msg = os_message(rc)
+    end subroutine stage_file
+
+    !> Rename a staged file over its target (the target's directory fsynced).
+    subroutine commit_file(tmp, path, msg)
+        character(len=*), intent(in) :: tmp, path
+        character(len=:), allocatable, intent(out) :: msg
+        msg = os_message(c_commit(tmp // c_null_char, path // c_null_char))
+    end subroutine commit_file
+
+    !> Remove a staged file that is not to be committed.
+    subroutine discard_file(tmp)
+        character(len=*), intent(in) :: tmp
+        if (len(tmp) > 0) call c_discard(tmp // c_null_char)
+    end subroutine discard_file
+
+    !> Take the lock of directory dir, waiting while another run holds it.
+    subroutine lock_dir(dir, fd, msg)
+        character(len=*), intent(in) :: dir
+        integer, intent(out) :: fd
+        character(len=:), allocatable, intent(out) :: msg
+        integer(c_int) :: cfd
+        msg = os_message(c_lock(dir // c_null_char, cfd))
+        fd = int(cfd)
+    end subroutine lock_dir
+
+    subroutine unlock_dir(fd)
+        integer, intent(in) :: fd
+        call c_unlock(int(fd, c_int))
+    end subroutine unlock_dir
+
+    !> True when a and b name one existing file (a link or another spelling
+    !> of the same path included).
+    logical function same_file(a, b)
+        character(len=*), intent(in) :: a, b
+        same_file = c_same_file(a // c_null_char, b // c_null_char) == 1
+    end function same_file
+
+    !> The C library's text for an errno value; empty for 0.
+    function os_message(rc) result(msg)
+        integer(c_int), intent(in) :: rc
+        character(len=:), allocatable :: msg
+        character(len=256) :: buf
+        if (rc == 0) then
+            msg = ''
+            return
+        end if
+        buf = ''
+        call c_strerror(rc, buf, int(len(buf), c_size_t))
+        msg = c_string(buf)
+        if (len(msg) == 0) msg = 'error'
+    end function os_message
+
+    !> The text of a NUL-terminated C string held in a Fortran buffer.
+    function c_string(buf) result(s)
+        character(len=*), intent(in) :: buf
+        character(len=:), allocatable :: s
+        integer :: k
+        k = index(buf, c_null_char)
+        if (k == 0) then
+            s = trim(buf)
+        else
+            s = buf(1:k - 1)
+        end if
+    end function c_string
+
+end module base_files
