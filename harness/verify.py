@@ -41,6 +41,7 @@ point.  The output is deterministic.  Exit status of the command: 0 PASS,
 
 from __future__ import annotations
 
+import hashlib
 import math
 import sys
 from collections.abc import Sequence
@@ -705,6 +706,45 @@ def check_tape(pkg: Package, layer: str, path: Path, tol: int = TOLERANCE,
     return check
 
 
+#: Job sheet keys of the files TENZOR records (docs/FILES.md): file key, size
+#: key, SHA-256 key.
+RECORDED = [("listing", "listing.bytes", "listing.sha256")] + [
+    (f"{t}.{k}", f"{t}.{'bytes' if k == 'tape' else 'text_bytes'}",
+     f"{t}.{'sha256' if k == 'tape' else 'text_sha256'}")
+    for t in LAYERS for k in ("tape", "text")]
+
+
+def package_files_agree(tapedir: Path, file_name: str) -> None:
+    """Raise VerifyError when the package's job sheet (if there is one)
+    records a size or SHA-256 that a file beside it does not have: the
+    files come from different runs, and no verdict on them would mean much."""
+    sheet = tapedir / f"{file_name}.job"
+    if not sheet.is_file():
+        return
+    try:
+        keys = dict(line.split(" = ", 1) for line in sheet.read_text("latin-1").splitlines()
+                    if " = " in line and not line.startswith("#"))
+    except OSError as exc:
+        raise VerifyError(f"{sheet}: {exc.strerror or exc}") from None
+    for file_key, size_key, sha_key in RECORDED:
+        if file_key not in keys or (size_key not in keys and sha_key not in keys):
+            continue
+        path = tapedir / keys[file_key]
+        if not path.exists():
+            continue                        # a missing tape is a reason of its own
+        try:
+            data = path.read_bytes()
+        except OSError as exc:
+            raise VerifyError(f"{path}: {exc.strerror or exc} (named by {sheet})") from None
+        size, sha = keys.get(size_key), keys.get(sha_key)
+        if (size is not None and size != str(len(data))) or \
+                (sha is not None and sha != hashlib.sha256(data).hexdigest()):
+            raise VerifyError(
+                f"{path}: not the file the job sheet {sheet} records ({len(data)} bytes, "
+                f"SHA-256 {hashlib.sha256(data).hexdigest()}; the sheet says {size} bytes, "
+                f"{sha}): the package holds files of different runs; run tenzor again")
+
+
 def verify(deck_text: str, tapedir: str | Path, tol: int = TOLERANCE,
            code: str = "auto", deck_name: str = "DECK") -> Verdict:
     """Check the tapes in ``tapedir`` against the deck; see the module doc.
@@ -726,6 +766,8 @@ def verify(deck_text: str, tapedir: str | Path, tol: int = TOLERANCE,
             raise VerifyError(f"{deck_name}: card {p.first_card}: package name {p.name!r} "
                               f"names the same files as card {seen[p.file_name]}")
         seen[p.file_name] = p.first_card
+    for p in packages:
+        package_files_agree(tapedir, p.file_name)
     verdict = Verdict(deck_name, str(tapedir), tol)
     for p in packages:
         pc = PackageCheck(p.name.strip(), p.first_card, p.scale,

@@ -7,10 +7,12 @@ module em703_commands
     use, intrinsic :: iso_fortran_env, only: int64, real64, output_unit
     use base_error, only: error_t, error_text, new_error
     use base_io, only: read_bytes, read_text, write_text, write_bytes, print_text, say
+    use base_files, only: same_file
+    use base_sha256, only: sha256_hex
     use base_text, only: text_t, str, fixed, mm, ends_with
     use em703_codec, only: tape_t, decode_tape, tape_text
     use em703_sim, only: run_t, simulate, field_check, shift_run
-    use em703_jobsheet, only: job_t, read_job, NLAYERS
+    use em703_jobsheet, only: job_t, layer_t, read_job, NLAYERS
     use em703_svg, only: svg_run, svg_job
     use em703_gcode, only: gcode_program
     use em703_gerber, only: gerber_image
@@ -23,22 +25,51 @@ module em703_commands
 
     integer, parameter, public :: EXIT_OK = 0, EXIT_INPUT = 1, EXIT_USAGE = 2
 
+    !> The files this run has read (outputs may not replace them).
+    type :: path_t
+        character(len=:), allocatable :: path
+    end type path_t
+    type(path_t), allocatable :: inputs(:)
+
 contains
 
-    !> Read and decode a tape; status 0, 1 (bad tape) or 2 (cannot read).
-    subroutine load_tape(path, code, rows, tape, status)
+    !> Read and decode a tape; status 0, 1 (bad tape) or 2 (cannot read). With
+    !> layer (a tape of a job sheet), the tape must have the size and SHA-256
+    !> the job sheet records for it, when it records them.
+    subroutine load_tape(path, code, rows, tape, status, layer, job_path)
         character(len=*), intent(in) :: path, code
         integer, allocatable, intent(out) :: rows(:)
         type(tape_t), intent(out) :: tape
         integer, intent(out) :: status
+        type(layer_t), intent(in), optional :: layer
+        character(len=*), intent(in), optional :: job_path
         type(error_t), allocatable :: err
+        character(len=:), allocatable :: bytes
+        integer :: i
         status = EXIT_OK
-        call read_bytes(path, rows, err)
+        call read_text(path, bytes, err)
         if (allocated(err)) then
             call say(error_text(err))
             status = EXIT_USAGE
             return
         end if
+        call remember_input(path)
+        if (present(layer)) then
+            if ((layer%bytes >= 0 .and. layer%bytes /= len(bytes)) .or. &
+                (len(layer%sha256) > 0 .and. layer%sha256 /= sha256_hex(bytes))) then
+                call say(path // ': the tape is not the one the job sheet ' // job_path // &
+                    ' records (' // str(len(bytes)) // ' bytes, SHA-256 ' // sha256_hex(bytes) // &
+                    '; the sheet says ' // str(layer%bytes) // ' bytes, ' // layer%sha256 // &
+                    '): the package holds files of different runs; run tenzor again')
+                status = EXIT_INPUT
+                return
+            end if
+        end if
+        allocate(rows(len(bytes)))
+        do i = 1, len(bytes)
+            rows(i) = iachar(bytes(i:i))
+        end do
+        deallocate(bytes)
         call decode_tape(rows, code, tape, err)
         if (allocated(err)) then
             err%file = path
@@ -57,12 +88,41 @@ contains
             call print_text(text%value())
             return
         end if
+        status = refuse_input(path)
+        if (status /= EXIT_OK) return
         call write_text(path, text%value(), err)
         if (allocated(err)) then
             call say(error_text(err))
             status = EXIT_USAGE
         end if
     end function emit
+
+    !> Note a file this run reads: no output may be written over it.
+    subroutine remember_input(path)
+        character(len=*), intent(in) :: path
+        type(path_t), allocatable :: more(:)
+        if (.not. allocated(inputs)) allocate(inputs(0))
+        allocate(more(size(inputs) + 1))
+        more(1:size(inputs)) = inputs
+        more(size(more))%path = path
+        call move_alloc(more, inputs)
+    end subroutine remember_input
+
+    !> EXIT_USAGE (and a message) when out is a file this run read.
+    integer function refuse_input(out) result(status)
+        character(len=*), intent(in) :: out
+        integer :: i
+        status = EXIT_OK
+        if (.not. allocated(inputs)) return
+        do i = 1, size(inputs)
+            if (same_file(out, inputs(i)%path)) then
+                call say('em703: will not write ' // out // ' over its own input ' // &
+                         inputs(i)%path // '; choose another output file (-o)')
+                status = EXIT_USAGE
+                return
+            end if
+        end do
+    end function refuse_input
 
     ! ------------------------------------------------------------------
     !> em703 list: the frames of a tape, its code variant, or its first error.
@@ -173,12 +233,14 @@ contains
                            index(err%message, 'cannot ') == 1)
             return
         end if
+        call remember_input(path)
         ox = 0
         oy = 0
         do l = 1, NLAYERS
             labels(l) = 'tape ' // job%layers(l)%key // ' ' // job%layers(l)%tape
             tools(l) = job%layers(l)%tool
-            call load_tape(job%layers(l)%path, job%code, rows, tape, status)
+            call load_tape(job%layers(l)%path, job%code, rows, tape, status, job%layers(l), &
+                           path)
             if (status /= EXIT_OK) return
             call simulate(tape%frames(1:tape%nframes), runs(l), err)
             if (allocated(err)) then
@@ -306,6 +368,7 @@ contains
             status = EXIT_USAGE
             return
         end if
+        call remember_input(path)
         call punch_text(text, code, rows, err)
         if (allocated(err)) then
             err%file = path
@@ -319,6 +382,8 @@ contains
             if (k <= index(path, '/', back=.true.) + 1) k = len(path) + 1
             target = path(1:k - 1) // '.' // code // '.ptp'
         end if
+        status = refuse_input(target)
+        if (status /= EXIT_OK) return
         call write_bytes(target, rows, err)
         if (allocated(err)) then
             call say(error_text(err))

@@ -2,7 +2,8 @@
 !> `key = value` lines, `#` comment lines. The em703 tools read the name, the
 !> code, the scale, the start point and, for each tape T in small, large,
 !> cond, its file `T.tape` (relative to the job sheet's directory) and its
-!> tool `T.tool_mm`. Other keys are ignored.
+!> tool `T.tool_mm`, and when TENZOR recorded them, its size `T.bytes` and
+!> SHA-256 `T.sha256`, which the tools check. Other keys are ignored.
 module em703_jobsheet
     use, intrinsic :: iso_fortran_env, only: int64
     use base_error, only: error_t, new_error, AT_LINE
@@ -21,6 +22,8 @@ module em703_jobsheet
         character(len=:), allocatable :: tape     !< as on the job sheet
         character(len=:), allocatable :: path     !< relative to the working directory
         integer(int64) :: tool = 0                !< tool diameter, 0.01 mm
+        integer(int64) :: bytes = -1              !< T.bytes: the tape's size (-1: not given)
+        character(len=:), allocatable :: sha256   !< T.sha256: its SHA-256 ("": not given)
     end type layer_t
 
     type :: job_t
@@ -51,6 +54,7 @@ contains
             job%layers(l)%key = trim(LAYER_KEYS(l))
             job%layers(l)%tape = ''
             job%layers(l)%path = ''
+            job%layers(l)%sha256 = ''
         end do
         seen_tape = .false.
         seen_tool = .false.
@@ -128,6 +132,20 @@ contains
                         end if
                         job%layers(l)%tool = v
                         seen_tool(l) = .true.
+                    else if (key == trim(LAYER_KEYS(l)) // '.bytes') then
+                        call parse_int(value, v, ok)
+                        if (.not. ok .or. v < 0) then
+                            call fail(key // ' must be a size in bytes, not "' // value // '"')
+                            return
+                        end if
+                        job%layers(l)%bytes = v
+                    else if (key == trim(LAYER_KEYS(l)) // '.sha256') then
+                        if (len(value) /= 64 .or. verify(value, '0123456789abcdef') /= 0) then
+                            call fail(key // ' must be 64 lower-case hexadecimal digits, not "' &
+                                      // value // '"')
+                            return
+                        end if
+                        job%layers(l)%sha256 = value
                     end if
                 end do
             end select

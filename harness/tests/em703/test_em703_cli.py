@@ -150,3 +150,55 @@ def test_outputs_are_the_same_bytes_every_run(em703_exe, example_tapes, example_
     for tape in example_tapes[:6]:
         for sub in ("list", "sim", "view"):
             assert run(em703_exe, sub, tape).stdout == run(em703_exe, sub, tape).stdout
+
+
+def _copy_package(job: Path, to: Path) -> Path:
+    """The job sheet and every file it names, copied into `to`."""
+    to.mkdir(parents=True, exist_ok=True)
+    for name in keys_of(job).values():
+        if (job.parent / name).is_file():
+            (to / name).write_bytes((job.parent / name).read_bytes())
+    (to / job.name).write_bytes(job.read_bytes())
+    return to / job.name
+
+
+@pytest.mark.parametrize("args", [("gcode", "{job}", "-o", "{job}"),
+                                  ("gcode", "{job}", "-o", "{small}"),
+                                  ("svg", "{job}", "-o", "{cond}"),
+                                  ("gerber", "{job}", "-o", "{large}"),
+                                  ("sim", "{small}", "--svg", "{small}"),
+                                  ("gcode", "{small}", "-o", "{small}")])
+def test_an_output_over_its_own_input_is_refused(em703_exe, example_jobs, tmp_path,
+                                                 args) -> None:
+    job = _copy_package(example_jobs[0], tmp_path)
+    keys = keys_of(job)
+    names = {"job": job, **{t: tmp_path / keys[f"{t}.tape"] for t in ("small", "large", "cond")}}
+    before = {p.name: p.read_bytes() for p in tmp_path.iterdir()}
+    argv = [a.format(**names) for a in args]
+    proc = run(em703_exe, *argv, check=2)
+    target = argv[-1]
+    assert f"em703: will not write {target} over its own input" in proc.stderr.decode()
+    assert {p.name: p.read_bytes() for p in tmp_path.iterdir()} == before
+
+
+def test_punch_over_its_own_input_is_refused(em703_exe, tmp_path) -> None:
+    src = tmp_path / "p.ngc"
+    src.write_text("G00 X1\n")
+    proc = run(em703_exe, "punch", "--code", "iso", "-o", tmp_path / "." / "p.ngc", src, check=2)
+    assert "over its own input" in proc.stderr.decode()
+    assert src.read_text() == "G00 X1\n"
+
+
+@pytest.mark.parametrize("sub", ["svg", "gcode", "gerber"])
+def test_a_tape_that_is_not_the_job_sheets_is_refused(em703_exe, example_jobs, tmp_path,
+                                                      sub) -> None:
+    """The job sheet records each tape's size and SHA-256: a tape of another
+    run (here: one byte changed) is refused, status 1, naming both files."""
+    job = _copy_package(example_jobs[0], tmp_path)
+    tape = tmp_path / keys_of(job)["large.tape"]
+    data = bytearray(tape.read_bytes())
+    data[0] ^= 1                             # a leader row, so the tape still decodes
+    tape.write_bytes(bytes(data))
+    line = one_line(run(em703_exe, sub, job, check=1))
+    assert line.startswith(f"{tape}: the tape is not the one the job sheet {job} records")
+    assert line.endswith("the package holds files of different runs; run tenzor again")

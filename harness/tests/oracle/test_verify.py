@@ -197,9 +197,12 @@ BROKEN: list[tuple[str, str, Callable[[list[Frame]], None], str, int | None, int
 
 def edited(board: Path, tmp_path: Path, layer: str,
            edit: Callable[[list[Frame]], bytes | None]) -> Path:
-    """A copy of the board's tapes with one tape's frames edited."""
+    """A copy of the board's tapes with one tape's frames edited, as another
+    program would punch them: without TENZOR's job sheet, whose checksums
+    would no longer hold (test_a_tape_that_is_not_the_job_sheets_is_refused)."""
     out = tmp_path / "tapes"
     shutil.copytree(board, out)
+    (out / "BOARD.job").unlink()
     path = out / f"BOARD-{layer}.ptp"
     t = tape.decode(path.read_bytes())
     frames = list(t.frames)
@@ -286,6 +289,22 @@ def test_broken_tape_fails_with_its_reason(board, tmp_path, layer, edit, kind, c
     assert f"  FAIL BOARD-{layer}.ptp" in v.text()
 
 
+@pytest.mark.parametrize("name", ["BOARD-cond.ptp", "BOARD-small.txt", "BOARD.lst"])
+def test_a_file_that_is_not_the_job_sheets_is_refused(board, tmp_path, name) -> None:
+    """A package whose files are not the ones its job sheet records (two
+    runs mixed, a file edited after the run): verify gives no verdict."""
+    out = tmp_path / "tapes"
+    shutil.copytree(board, out)
+    with open(out / name, "ab") as f:
+        f.write(b"\0")
+    with pytest.raises(verify.VerifyError, match=f"{name}: not the file the job sheet "
+                       f".*BOARD.job records .*: the package holds files of different runs"):
+        verify.verify(BOARD, out)
+    deck = tmp_path / "deck.crd"
+    deck.write_text(BOARD)
+    assert main(["verify", str(deck), str(out)]) == 2
+
+
 def test_messages_say_what_and_where(board, tmp_path) -> None:
     cases = {
         "small": (drop_pad, "card 3 (D): round 1.60 mm pad at (10.00, 10.00) mm: missing, "
@@ -326,6 +345,7 @@ def test_start_point_moved_on_the_deck_leaves_the_field(board) -> None:
 def test_corrupt_row_is_a_code_error_with_its_row(board, tmp_path) -> None:
     out = tmp_path / "tapes"
     shutil.copytree(board, out)
+    (out / "BOARD.job").unlink()            # another program's tapes: no job sheet
     path = out / "BOARD-small.ptp"
     data = bytearray(path.read_bytes())
     data[29] = 0o15                         # row 30: no such code
@@ -398,6 +418,7 @@ def test_m_card_drawing_left_out(run_tenzor, tmp_path) -> None:
     assert frames[0] == Frame(dx=-500, dy=-500, k=10)
     frames[0] = replace(frames[0], k=20)
     path.write_bytes(tape.encode(frames))
+    (out / "EXAMPLE4.job").unlink()         # another program's tapes: no job sheet
     v = verify.verify(deck.read_text(), out)
     assert [(r.kind, r.card) for r in v.reasons] == [("m-drawing", 6)], v.text()
     assert "card 6 (M), M frame 1 of this tape: the line it draws from (0.00, 0.00) mm " \
