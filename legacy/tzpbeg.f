@@ -51,6 +51,7 @@ C     ---- LOCAL -------------------------------------------------------
       CHARACTER*12 S1
       CHARACTER*1 CH
       INTEGER I, IA, IB, L, L1, ISUF, IDUP, LBLNK, LFULLP
+      LOGICAL CMSAME
       DATA OKCH / 'ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0
      1123456789' /
 C
@@ -98,12 +99,14 @@ C     ---- THE FILE NAME -----------------------------------------------
    20    CONTINUE
       END IF
 C     ---- A NAME USED BEFORE IN THIS JOB GETS A SUFFIX ----------------
+C     (A NAME THAT DIFFERS FROM AN EARLIER ONE ONLY IN CASE IS THE SAME
+C     NAME: CMSAME)
       CALL CMTRIM(PKFILE, L)
       IDUP = 0
       ISUF = 1
    30 CONTINUE
       DO 40 I = 1, MIN(NPKG, MXPKG)
-         IF (PKNAMS(I) .EQ. PKFILE) THEN
+         IF (CMSAME(PKNAMS(I), PKFILE)) THEN
             IF (IDUP .EQ. 0) IDUP = I
             ISUF = ISUF + 1
             CALL CMITOA(ISUF, S1, L1)

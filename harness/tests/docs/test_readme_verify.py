@@ -2,7 +2,7 @@
 copied, two rows damaged with dd, and the verdict printed word for word.
 
 The session is replayed from README.md itself: `make demo` runs the tenzor
-under test on the demo deck, `cp -r` copies, each `printf '\\OOO' | dd ...`
+under test on the demo deck, `cp -r` copies, `rm` removes, each `printf '\\OOO' | dd ...`
 line writes its one byte at its offset, and the `verify` line runs the
 oracle; what it prints must be the lines that follow in README.md.
 """
@@ -43,6 +43,8 @@ def test_readme_verify_session_prints_what_readme_says(tenzor_exe, tmp_path):
                            cwd=tmp_path, check=True, capture_output=True)
         elif m := re.fullmatch(r"cp -r (\S+) (\S+)", command):
             shutil.copytree(tmp_path / m[1], tmp_path / m[2])
+        elif m := re.fullmatch(r"rm (\S+)", command):
+            (tmp_path / m[1]).unlink()
         elif m := re.fullmatch(r"printf '\\([0-7]{3})' \| dd of=(\S+) bs=1 "
                                r"seek=([0-9]+) conv=notrunc status=none", command):
             path = tmp_path / m[2]

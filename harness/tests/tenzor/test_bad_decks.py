@@ -161,6 +161,18 @@ def test_duplicate_package_names_keep_both_listings(run_tenzor):
     assert not (out / "GOOD-2-cond.ptp").exists()
 
 
+def test_package_names_that_differ_only_in_case_are_duplicates(run_tenzor):
+    """On a file system that folds case (macOS, Windows) GOOD and good would
+    be one file: the second is a duplicate, its listing good-2.lst is beside
+    the first package's files, and it punches nothing."""
+    deck = GOOD + GOOD.replace("C\n", "E\n").replace("GOOD\n", "good\n", 1)
+    proc, out = run_tenzor(deck)
+    assert proc.returncode == 1
+    assert "PACKAGE NAME GOOD IS ALREADY USED" in proc.stderr.decode()
+    assert sorted(p.name for p in out.glob("*.lst")) == ["GOOD.lst", "good-2.lst"]
+    assert sorted(p.name for p in out.glob("good*")) == ["good-2.lst"]
+
+
 def test_blank_name_card_is_an_error(run_tenzor):
     deck = card(c20="X") + "\n" + card(c1="M", c31=f10("1.00"), c56="   10") + "\nE\n"
     proc, out = run_tenzor(deck)
