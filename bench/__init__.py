@@ -24,6 +24,8 @@ from __future__ import annotations
 import time
 from pathlib import Path
 
+from harness.files import write_whole
+
 from . import boards, measure, tours
 
 __all__ = ["run_board"]
@@ -76,7 +78,7 @@ def run_board(board: boards.Board, exe: Path, scratch: Path, repeats: int,
     """Every figure of one board, as a row of the CSV (report.COLUMNS)."""
     deck = scratch / f"{board.name}.crd"
     text = board.deck()
-    deck.write_text(text, encoding="ascii")
+    write_whole(deck, text)
     out = scratch / board.name
     seconds, cpu = measure.time_tenzor(exe, deck, out, repeats, budget=min_seconds)
     rss_kb = measure.peak_rss(exe, deck, out)

@@ -20,6 +20,8 @@ import time
 from collections.abc import Sequence
 from pathlib import Path
 
+from harness.files import write_whole
+
 from . import boards, report, run_board, tours
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -87,9 +89,9 @@ def write_outputs(rows: Sequence[dict], out: Path) -> str:
     """bench.txt, bench.md and bench.svg of the rows (bench.csv is the
     caller's); returns the text of bench.txt."""
     text = report.table(rows) + "\n" + report.targets_text(rows)
-    (out / "bench.txt").write_text(text, encoding="ascii")
-    (out / "bench.md").write_text(report.table(rows, markdown=True), encoding="ascii")
-    (out / "bench.svg").write_text(report.svg(rows), encoding="ascii")
+    write_whole(out / "bench.txt", text)
+    write_whole(out / "bench.md", report.table(rows, markdown=True))
+    write_whole(out / "bench.svg", report.svg(rows))
     return text
 
 

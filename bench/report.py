@@ -7,9 +7,12 @@ charts of the CSV's figures against the board size.
 from __future__ import annotations
 
 import csv
+import io
 import math
 from collections.abc import Sequence
 from pathlib import Path
+
+from harness.files import write_whole
 
 #: CSV columns, in order, with what each holds.
 COLUMNS: dict[str, str] = {
@@ -66,11 +69,12 @@ def _fmt(value: object) -> str:
 
 
 def write_csv(rows: Sequence[dict], path: Path) -> None:
-    with path.open("w", newline="", encoding="ascii") as f:
-        w = csv.writer(f, lineterminator="\n")
-        w.writerow(COLUMNS)
-        for r in rows:
-            w.writerow([_fmt(r.get(c)) for c in COLUMNS])
+    f = io.StringIO()
+    w = csv.writer(f, lineterminator="\n")
+    w.writerow(COLUMNS)
+    for r in rows:
+        w.writerow([_fmt(r.get(c)) for c in COLUMNS])
+    write_whole(path, f.getvalue())
 
 
 def read_csv(path: Path) -> list[dict[str, str]]:

@@ -37,6 +37,8 @@ from collections.abc import Iterable
 from dataclasses import dataclass, field
 from pathlib import Path
 
+from .files import write_whole
+
 #: The rules: id -> what it requires.  Every message names one of these ids.
 RULES: dict[str, str] = {
     "F77-BLANK": "no blank lines: a card deck has no blank cards (use a C comment)",
@@ -903,7 +905,7 @@ def write_copies(paths: Iterable[Path], master: dict[str, list[str]]) -> list[Pa
                 lines[a:b + 1] = master[name]
         new = "\n".join(lines) + "\n"
         if new != text:
-            path.write_text(new, encoding="ascii")
+            write_whole(path, new)
             changed.append(path)
     return changed
 
@@ -1060,7 +1062,7 @@ def write_index(root: Path) -> bool:
     a, b = text.index(INDEX_BEGIN), text.index(INDEX_END) + len(INDEX_END) + 1
     new = text[:a] + legacy_index(root) + text[b:]
     if new != text:
-        readme.write_text(new, encoding="utf-8")
+        write_whole(readme, new, encoding="utf-8")
     return new != text
 
 

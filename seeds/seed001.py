@@ -38,6 +38,7 @@ says which drawing point does; coordinates are rounded to 0.01 mm.
 from __future__ import annotations
 
 import argparse
+import io
 import math
 import re
 import sys
@@ -50,6 +51,7 @@ from typing import Any
 import ezdxf
 
 from harness import cards
+from harness.files import write_whole
 
 from .contour import ArcEl, Seg, arc_chords, contour_cards, distance_to
 
@@ -401,7 +403,7 @@ def _run(args: argparse.Namespace) -> int:
                      job=f"DXF2DECK {Path(args.drawing).name}"[:60])
     if args.output:
         try:
-            Path(args.output).write_text(text, encoding="ascii")
+            write_whole(args.output, text, inputs=[args.drawing])
         except OSError as exc:
             print(f"dxf2deck: {args.output}: {exc.strerror or exc}", file=sys.stderr)
             return 2
@@ -568,7 +570,9 @@ def write_dxf(path: str | Path, offset: tuple[float, float] = (0.0, 0.0)) -> Non
                                                              "layer": "NOTES"})
         msp.add_spline([pt((0, 0)), pt((30, -2)), pt((60, 0))], dxfattribs={"layer": "OUTLINE"})
         msp.add_point(pt((30, 25)), dxfattribs={"layer": "OUTLINE"})
-        doc.saveas(str(path))
+        buf = io.StringIO()
+        doc.write(buf)
+        write_whole(path, buf.getvalue().encode(doc.output_encoding, errors="dxfreplace"))
     finally:
         ezdxf.options.write_fixed_meta_data_for_testing = saved
 
@@ -579,7 +583,7 @@ def _run_board(args: argparse.Namespace) -> int:
     try:
         out.mkdir(parents=True, exist_ok=True)
         write_dxf(out / "board.dxf")
-        (out / "board-known.crd").write_text(known_deck(), encoding="ascii")
+        write_whole(out / "board-known.crd", known_deck())
     except OSError as exc:
         print(f"dxfboard: {out}: {exc.strerror or exc}", file=sys.stderr)
         return 2

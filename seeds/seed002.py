@@ -39,6 +39,7 @@ from typing import Union
 
 from harness import cards
 from harness.deck import parse_deck
+from harness.files import write_whole
 
 from .contour import (ArcEl, Element, Seg, close_chain, contour_cards, contour_from_package,
                       equidistant, sample, units)
@@ -568,7 +569,7 @@ def _run_profile(args: argparse.Namespace) -> int:
             body = [cards.p_card(10000, 10000, order="D"), cards.l_card(*path[0])]
             body += [cards.plus_card(*u) for u in path[1:]]
             text = cards.deck([cards.CardPackage("PROFILE", body)], job="URAL-1 PROFILE")
-            open(args.output, "w", encoding="ascii").write(text)
+            write_whole(args.output, text, inputs=[args.points] if args.points else [])
     except (OSError, ValueError) as exc:
         print(f"profile: {exc}", file=sys.stderr)
         return 1 if isinstance(exc, ValueError) else 2
@@ -603,9 +604,9 @@ def _run_equidistant(args: argparse.Namespace) -> int:
                 contour = close_chain(contour_from_package(pkg))
                 layers += [(contour, "black"),
                            (equidistant(contour, args.cutter / 2, not args.inside), "#c00")]
-            open(args.svg, "w", encoding="ascii").write(contours_svg(layers))
+            write_whole(args.svg, contours_svg(layers), inputs=[args.deck])
         if args.output:
-            open(args.output, "w", encoding="ascii").write(out)
+            write_whole(args.output, out, inputs=[args.deck])
         else:
             sys.stdout.write(out)
     except OSError as exc:
@@ -668,7 +669,7 @@ def _run_punch5121(args: argparse.Namespace) -> int:
         if not args.output:
             print("punch5121: -o TAPE.ptp is required to punch", file=sys.stderr)
             return 2
-        open(args.output, "wb").write(data)
+        write_whole(args.output, data, inputs=[args.input])
     except OSError as exc:
         print(f"punch5121: {exc.filename or args.input}: {exc.strerror or exc}", file=sys.stderr)
         return 2

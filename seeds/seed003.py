@@ -46,6 +46,7 @@ from collections.abc import Iterable, Sequence
 from dataclasses import dataclass, field
 
 from harness.deck import parse_deck
+from harness.files import write_whole
 
 from .seed004 import split_move
 
@@ -413,7 +414,7 @@ def _run_cnclink(args: argparse.Namespace) -> int:
         return 1
     if args.output:
         try:
-            open(args.output, "wb").write(data)
+            write_whole(args.output, data, inputs=[args.input])
         except OSError as exc:
             print(f"cnclink: {args.output}: {exc.strerror or exc}", file=sys.stderr)
             return 2

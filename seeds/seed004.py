@@ -45,6 +45,8 @@ from collections.abc import Sequence
 from dataclasses import dataclass
 from pathlib import Path
 
+from harness.files import write_whole
+
 from .seed002 import code_5121_weights
 
 #: The document's split of DX = 98132, DY = 87647 pulses at most 9999 per frame.
@@ -424,7 +426,7 @@ def _run_dda(args: argparse.Namespace) -> int:
     sys.stdout.write(summary(run))
     if args.plot:
         try:
-            Path(args.plot).write_text(svg_plot(run), encoding="ascii")
+            write_whole(args.plot, svg_plot(run))
         except OSError as exc:
             print(f"dda: {args.plot}: {exc.strerror or exc}", file=sys.stderr)
             return 2

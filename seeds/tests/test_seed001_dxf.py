@@ -183,3 +183,12 @@ def test_origin_moves_the_start_point(origin: tuple[float, float], tmp_path: Pat
     conv = seed001.convert(doc, origin)
     card = conv.items[0].cards[0]
     assert card[10:30] == "      1.00      2.00"
+
+
+def test_dxf2deck_will_not_write_over_its_drawing(tmp_path: Path, capsys) -> None:
+    drawing = tmp_path / "board.dxf"
+    drawing.write_bytes((EXAMPLES / "board.dxf").read_bytes())
+    assert main(["dxf2deck", str(drawing), "-o", str(tmp_path / "." / "board.dxf")]) == 2
+    assert "will not write over its own input" in capsys.readouterr().err
+    assert drawing.read_bytes() == (EXAMPLES / "board.dxf").read_bytes()
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["board.dxf"]

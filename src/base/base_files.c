@@ -8,6 +8,12 @@
  * it renamed over the target, and the directory is fsynced. A failure leaves
  * the target as it was and removes the temporary file.
  *
+ * A target that exists and is not a regular file (a terminal, a pipe, a
+ * FIFO, /dev/stdout, /dev/null) cannot be replaced by a rename: the bytes are
+ * written straight into it, and there is nothing to commit. A symbolic link
+ * at the target is replaced by the new file, not followed, when the file it
+ * points to is a regular file (or missing).
+ *
  * C, not Fortran, because these services need the C library's own
  * constants (open flags, errno), which differ from system to system.
  * Each function returns 0 or an errno value; base_files.f90 turns that into
@@ -88,6 +94,15 @@ int em_stage(const char *path, const char *data, size_t n, char *tmp, size_t cap
      * like a full disk, not the signal that would end the program (and that
      * the Fortran run-time library turns into a backtrace) */
     signal(SIGXFSZ, SIG_IGN);
+    if (cap > 0) tmp[0] = '\0';
+    if (stat(path, &st) == 0 && !S_ISREG(st.st_mode)) {
+        if (S_ISDIR(st.st_mode)) return EISDIR;
+        fd = open(path, O_WRONLY | O_CLOEXEC);
+        if (fd < 0) return errno;
+        rc = write_all(fd, data, n);
+        if (close(fd) != 0 && rc == 0) rc = errno;
+        return rc;
+    }
     fd = create_temp(path, tmp, cap);
     if (fd < 0) return errno;
     rc = write_all(fd, data, n);
@@ -104,6 +119,7 @@ int em_commit(const char *tmp, const char *path)
 {
     char dir[4096];
     int dfd;
+    if (tmp[0] == '\0') return 0;  /* written straight into a device or FIFO */
     if (rename(tmp, path) != 0) {
         int rc = errno;
         unlink(tmp);
@@ -121,7 +137,7 @@ int em_commit(const char *tmp, const char *path)
 /* Remove a staged file that will not be committed. */
 void em_discard(const char *tmp)
 {
-    unlink(tmp);
+    if (tmp[0] != '\0') unlink(tmp);
 }
 
 /* Take the lock of a directory (flock on the directory itself, so no lock

@@ -5,7 +5,8 @@
 !> over the target; a failure leaves the target as it was and no temporary
 !> file. A set of files (a TENZOR package) is staged first and renamed
 !> together, under the directory's lock, so that runs into one directory never
-!> mix their files.
+!> mix their files. A target that is a device or a FIFO (/dev/stdout) is
+!> written straight into.
 module base_files
     use, intrinsic :: iso_c_binding, only: c_int, c_char, c_null_char, c_size_t
     implicit none
@@ -84,7 +85,8 @@ contains
         msg = os_message(rc)
     end subroutine stage_file
 
-    !> Rename a staged file over its target (the target's directory fsynced).
+    !> Rename a staged file over its target (the target's directory fsynced);
+    !> nothing to do when it was written straight into a device (tmp empty).
     subroutine commit_file(tmp, path, msg)
         character(len=*), intent(in) :: tmp, path
         character(len=:), allocatable, intent(out) :: msg

@@ -202,3 +202,20 @@ def test_a_tape_that_is_not_the_job_sheets_is_refused(em703_exe, example_jobs, t
     line = one_line(run(em703_exe, sub, job, check=1))
     assert line.startswith(f"{tape}: the tape is not the one the job sheet {job} records")
     assert line.endswith("the package holds files of different runs; run tenzor again")
+
+
+def test_output_to_dev_stdout_and_a_planted_link(em703_exe, example_jobs, tmp_path) -> None:
+    """-o /dev/stdout writes into the pipe (the link in /dev stays); a link
+    planted at the output's name is replaced, and the file it pointed to
+    keeps its bytes."""
+    job = example_jobs[0]
+    piped = run(em703_exe, "gcode", job, "-o", "/dev/stdout")
+    assert piped.stdout.decode().startswith("%\n") and Path("/dev/stdout").is_symlink()
+    victim = tmp_path / "victim"
+    victim.write_text("precious")
+    out = tmp_path / "x.ngc"
+    out.symlink_to(victim)
+    run(em703_exe, "gcode", job, "-o", out)
+    assert victim.read_text() == "precious"
+    assert not out.is_symlink() and out.read_bytes() == piped.stdout
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["victim", "x.ngc"]

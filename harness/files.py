@@ -1,0 +1,84 @@
+"""Whole-file writes for every Python writer of the project (the harness,
+the neighbouring systems of seeds/, the benchmarks): a file is written whole
+or not at all.
+
+The bytes go to a new temporary file beside the target, created exclusively
+with a fresh name (never an existing file, never through a planted symbolic
+link), are flushed and fsynced, and the file is renamed over the target; the
+directory is fsynced after. When anything fails (a full disk, a directory in
+the way) the temporary file is removed, the target is as it was, and the
+OSError goes to the caller, which reports it. ``inputs`` are the files the
+command read: an output that is one of them is refused before anything is
+written, as the Fortran programs do (src/base/base_files). A target that
+exists and is not a regular file (a pipe, a terminal, /dev/stdout) is written
+straight into; a symbolic link at the target is replaced, not followed.
+"""
+from __future__ import annotations
+
+import errno
+import os
+import stat
+import tempfile
+from collections.abc import Iterable
+from pathlib import Path
+
+
+def _umask() -> int:
+    mask = os.umask(0)
+    os.umask(mask)
+    return mask
+
+
+def same_file(a: str | Path, b: str | Path) -> bool:
+    """True when a and b name one existing file."""
+    try:
+        return os.path.samefile(a, b)
+    except OSError:
+        return False
+
+
+def write_whole(path: str | Path, data: bytes | str, encoding: str = "ascii",
+                inputs: Iterable[str | Path] = ()) -> None:
+    """Write data (text in ``encoding``) as the whole file path."""
+    path = Path(path)
+    for given in inputs:
+        if same_file(path, given):
+            raise OSError(errno.EEXIST, f"will not write over its own input {given}",
+                          str(path))
+    if isinstance(data, str):
+        data = data.encode(encoding)
+    try:
+        special = not stat.S_ISREG(os.stat(path).st_mode)
+    except OSError:
+        special = False
+    if special:
+        if path.is_dir():
+            raise IsADirectoryError(errno.EISDIR, os.strerror(errno.EISDIR), str(path))
+        with open(path, "wb") as f:
+            f.write(data)
+        return
+    directory = path.parent if str(path.parent) else Path(".")
+    fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=directory)
+    try:
+        with os.fdopen(fd, "wb") as f:
+            f.write(data)
+            f.flush()
+            os.fsync(f.fileno())
+        os.chmod(tmp, 0o666 & ~_umask())
+        os.replace(tmp, path)
+    except BaseException:
+        try:
+            os.unlink(tmp)
+        except FileNotFoundError:
+            pass
+        raise
+    try:
+        dfd = os.open(directory, os.O_RDONLY)
+    except OSError:
+        return
+    try:
+        os.fsync(dfd)
+    except OSError:
+        pass                        # not every file system can; the rename stands
+    finally:
+        os.close(dfd)
