@@ -149,3 +149,42 @@ def test_fifo_and_standard_input_read_the_bytes_of_a_file(tenzor_exe, tmp_path):
     assert errs[0] == errs[1] == errs[2]
     assert "CARD 4 COL 9: BYTE 13 IS NOT A CARD CHARACTER" in errs[0]
     assert _files(tmp_path / "a") == _files(tmp_path / "b") == _files(tmp_path / "c")
+
+
+def _package_agrees_with_its_job_sheet(out: Path, name: str) -> bool:
+    import hashlib
+    keys = read_job(out / f"{name}.job")
+    for file_key, size_key, sha_key in [("listing", "listing.bytes", "listing.sha256")] + [
+            (f"{t}.{k}", f"{t}.{'bytes' if k == 'tape' else 'text_bytes'}",
+             f"{t}.{'sha256' if k == 'tape' else 'text_sha256'}")
+            for t in ("small", "large", "cond") for k in ("tape", "text")]:
+        data = (out / keys[file_key]).read_bytes()
+        if keys[size_key] != str(len(data)) or keys[sha_key] != hashlib.sha256(data).hexdigest():
+            return False
+    return True
+
+
+def test_concurrent_runs_into_one_directory_never_mix(tenzor_exe, tmp_path):
+    """Eight runs at once into one directory, of two decks whose packages have
+    one name: every run succeeds, no temporary file is left, and the package
+    in the directory is one run's whole (its files are the ones its job
+    sheet records). Repeated, so that the runs' commits interleave."""
+    decks = []
+    for n, size in enumerate(("1.00", "2.00")):
+        deck = tmp_path / f"deck{n}.crd"
+        deck.write_text("SAME\nP             100.00    100.00\n"
+                        f"D              10.00     10.00    {size}\n"
+                        "L              20.00     20.00    0.50\n+              40.00     20.00\nE\n")
+        decks.append(deck)
+    out = tmp_path / "out"
+    for _ in range(5):
+        procs = [subprocess.Popen([str(tenzor_exe), str(decks[i % 2]), "-o", str(out)],
+                                  stdout=subprocess.PIPE, stderr=subprocess.PIPE)
+                 for i in range(8)]
+        for p in procs:
+            stdout, stderr = p.communicate(timeout=120)
+            assert p.returncode == 0, stderr.decode()
+        assert sorted(p.name for p in out.iterdir()) == [
+            "SAME-cond.ptp", "SAME-cond.txt", "SAME-large.ptp", "SAME-large.txt",
+            "SAME-small.ptp", "SAME-small.txt", "SAME.job", "SAME.lst"]
+        assert _package_agrees_with_its_job_sheet(out, "SAME")
