@@ -7,6 +7,7 @@
 program tenzor_shell
     use, intrinsic :: iso_fortran_env, only: error_unit, output_unit
     use base_args, only: get_arg
+    use base_version, only: VERSION, VERSION_LINE_TAIL
     use monitor_devices, only: dev_load_deck, dev_load_stdin, dev_set_output, dev_io_failed
     implicit none
 
@@ -31,6 +32,9 @@ program tenzor_shell
         select case (arg)
         case ('-h', '--help')
             call usage(output_unit)
+            stop 0, quiet=.true.
+        case ('--version')
+            write(output_unit, '(a)') 'tenzor ' // VERSION // VERSION_LINE_TAIL
             stop 0, quiet=.true.
         case ('-o', '--output')
             if (i == nargs) call fail('option ' // arg // ' needs a directory')
@@ -86,6 +90,7 @@ contains
             '  -o DIR      output directory (default: out; created if missing)', &
             '  --code 8|K  tape code: 8 plain, K with control; overrides the P card', &
             '  -h, --help  this text', &
+            '  --version   the version', &
             '', &
             'Exit status: 0 all packages punched, 1 the deck has errors (see the', &
             'listings and standard error), 2 usage or I/O error.'

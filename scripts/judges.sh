@@ -46,7 +46,7 @@ done
 out=build/$judge${linker:+-$linker}
 work=$out.new
 # the modern sources of the tenzor program, in the order their modules need them
-shell=(src/base/base_error.f90 src/base/base_os.f90 src/base/base_files.f90
+shell=(src/base/base_error.f90 src/base/base_os.f90 src/base/base_files.f90 src/base/base_version.f90
        src/base/base_io.f90 src/base/base_sha256.f90 src/monitor/monitor_devices.f90
        src/monitor/devices.f90 src/base/base_args.f90 app/tenzor.f90)
 rm -rf "$work"

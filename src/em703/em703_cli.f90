@@ -13,6 +13,7 @@ module em703_cli
     use, intrinsic :: iso_fortran_env, only: int64, real64, output_unit
     use base_args, only: get_arg
     use base_io, only: say
+    use base_version, only: VERSION, VERSION_LINE_TAIL
     use base_text, only: str, parse_int, parse_mm, parse_real
     use em703_codec, only: MAX_NUMBER
     use em703_jobsheet, only: parse_scale, machine_scale
@@ -74,6 +75,10 @@ contains
         cli%command = get_arg(1)
         if (cli%command == '-h' .or. cli%command == '--help' .or. cli%command == 'help') then
             call help('')
+            stop 0, quiet=.true.
+        end if
+        if (cli%command == '--version') then
+            write(output_unit, '(a)') 'em703 ' // VERSION // VERSION_LINE_TAIL
             stop 0, quiet=.true.
         end if
         k = 0
@@ -416,6 +421,7 @@ contains
             '  punch --code iso|eia [-o TAPE] FILE  punch text on ISO or EIA tape', &
             '  view TAPE                            a picture of a punched tape', &
             '  split [--max N] DX DY                a long move split into frames', &
+            '  --version                            the version', &
             '', &
             'Exit status: 0 done, 1 the input had errors, 2 usage or I/O error.'])
         end select

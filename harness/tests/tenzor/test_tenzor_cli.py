@@ -188,3 +188,14 @@ def test_concurrent_runs_into_one_directory_never_mix(tenzor_exe, tmp_path):
             "SAME-cond.ptp", "SAME-cond.txt", "SAME-large.ptp", "SAME-large.txt",
             "SAME-small.ptp", "SAME-small.txt", "SAME.job", "SAME.lst"]
         assert _package_agrees_with_its_job_sheet(out, "SAME")
+
+
+@pytest.mark.parametrize("program", ["tenzor", "em703"])
+def test_version_is_fpm_tomls(tenzor_exe, em703_exe, program):
+    import tomllib
+    want = tomllib.loads((Path(__file__).resolve().parents[3] / "fpm.toml").read_text())
+    exe = tenzor_exe if program == "tenzor" else em703_exe
+    proc = subprocess.run([str(exe), "--version"], capture_output=True, text=True, timeout=60)
+    assert proc.returncode == 0 and proc.stderr == ""
+    assert proc.stdout.startswith(f"{program} {want['version']} (EM-703 tape subsystem")
+    assert proc.stdout.count("\n") == 1
