@@ -14,6 +14,9 @@
 #                      again, on a build with gfortran's run-time checks
 #   make test-cpus     the raster, verify and coverage tests again with numpy's
 #                      AVX-512 paths disabled, and again without AVX2 either
+#   make fuzz          exploration, not a verdict: the fuzz suites with new random
+#                      cases (2500 a property) against the build with run-time checks;
+#                      a failure it finds becomes an @example (docs/ROBUSTNESS.md)
 SHELL := /bin/bash
 export PATH := $(CURDIR)/.venv/bin:$(PATH)
 DECK ?= examples/demo.crd
@@ -29,7 +32,7 @@ CHECKS := -fcheck=all -ffpe-trap=invalid,zero,overflow -ftrapv
 # The built program is run directly: `fpm run` would add its own progress lines.
 TENZOR = "$$(fpm run --runner echo tenzor 2>/dev/null | tail -n 1)"
 
-.PHONY: demo examples test test-checks test-cpus bench setup build f2c flang
+.PHONY: demo examples test test-checks test-cpus fuzz bench setup build f2c flang
 
 setup:
 	@bash scripts/setup.sh
@@ -53,6 +56,15 @@ test-checks: setup
 	TENZOR_EXE="$$(fpm run --profile debug --flag "$(CHECKS)" --runner echo tenzor 2>/dev/null | tail -n 1)" \
 	EM703_EXE="$$(fpm run --profile debug --flag "$(CHECKS)" --runner echo em703 2>/dev/null | tail -n 1)" \
 		python -m pytest -m "tenzor or em703"
+
+FUZZ_TESTS := harness/tests/tenzor/test_fuzz_tenzor.py harness/tests/em703/test_fuzz_em703.py \
+	harness/tests/legacy/test_judges.py
+fuzz: setup
+	fpm build --profile debug --flag "$(CHECKS)" >/dev/null
+	HYPOTHESIS_PROFILE=long \
+	TENZOR_EXE="$$(fpm run --profile debug --flag "$(CHECKS)" --runner echo tenzor 2>/dev/null | tail -n 1)" \
+	EM703_EXE="$$(fpm run --profile debug --flag "$(CHECKS)" --runner echo em703 2>/dev/null | tail -n 1)" \
+		python -m pytest $(FUZZ_TESTS) --hypothesis-show-statistics
 
 # The tests whose verdicts come from the harness's rasteriser, and the numpy
 # SIMD groups each pass disables (numpy 2's names; the first test checks they

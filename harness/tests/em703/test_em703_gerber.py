@@ -1,9 +1,22 @@
 """`em703 gerber` rendered by an independent tool, gerbv (Debian package
 gerbv), against the harness's raster of the same tapes (harness/raster.py):
-on every example job and on random jobs, the two bitmaps agree within one
-pixel band (every pixel one of them sets has a pixel of the other within one
-pixel, diagonals included). The Gerber text is also checked for its form and
-for being the same bytes from run to run."""
+on every example job and on random jobs, the two bitmaps agree within a band
+of BAND pixels (every pixel one of them sets has a pixel of the other within
+BAND pixels, diagonals included). The Gerber text is also checked for its form
+and for being the same bytes from run to run.
+
+Why two pixels, not one: gerbv's PNG export moves every coordinate to the
+pixel grid before it draws (measured: a 0.5 mm flash at x = -1.155 mm, 0.225
+pixel from a pixel corner, is drawn centred on that corner; the same in y),
+and draws strokes whole pixels wide (a 0.5 mm stroke at 127 dpi, 2.5 pixels,
+comes out 3 pixels wide). The harness samples the exact geometry at pixel
+centres. Each side is then within a pixel of the truth, but not within one
+pixel of each other: at the corner where a 0.5 mm stroke meets a circle's
+band (hypothesis found it: the example below), gerbv's stroke stands 1.25
+pixels right of the exact one, and the pixel in the corner is 2 pixels from
+the harness's nearest. With -a (antialiasing, used here) the snapping stays;
+only the edges are smoother. So the band is gerbv's half pixel of snapping
+and half pixel of width on top of the two samplings' pixel."""
 
 from __future__ import annotations
 
@@ -15,7 +28,7 @@ from pathlib import Path
 
 import numpy as np
 import pytest
-from hypothesis import assume, given, settings
+from hypothesis import assume, example, given, settings
 from hypothesis import strategies as st
 
 from harness.deck import run_shapes
@@ -78,13 +91,17 @@ def read_png(path: Path) -> np.ndarray:
     return out[1:, 1:].astype(np.uint8)
 
 
-def dilate(a: np.ndarray) -> np.ndarray:
-    """a grown by one pixel in the 8 directions."""
-    p = np.pad(a, 1)
+#: How far apart, in pixels, gerbv's picture and the harness's may be (see above).
+BAND = 2
+
+
+def dilate(a: np.ndarray, n: int = BAND) -> np.ndarray:
+    """a grown by n pixels in the 8 directions."""
+    p = np.pad(a, n)
     out = np.zeros_like(a)
     h, w = a.shape
-    for dy in (0, 1, 2):
-        for dx in (0, 1, 2):
+    for dy in range(2 * n + 1):
+        for dx in range(2 * n + 1):
             out |= p[dy:dy + h, dx:dx + w]
     return out
 
@@ -113,7 +130,7 @@ def _render_both(em703_exe: Path, job: Path, tmp: Path) -> tuple[np.ndarray, np.
     origin = f"{x0 / 100:.4f}x{y0 / 100:.4f}"
     assert len(origin) < 20 and abs(float(origin.split("x")[0]) * 100 - x0) < 1e-6, origin
     proc = subprocess.run(
-        [GERBV, "-x", "png", "-u", "mm", "-D", str(dpi), "-O", origin,
+        [GERBV, "-a", "-x", "png", "-u", "mm", "-D", str(dpi), "-O", origin,
          "-w", f"{nx}x{ny}", "-B", "0", "-b", "#000000", "-f", "#ffffffff", "-o", str(png),
          str(gerber)], capture_output=True, timeout=120)
     assert proc.returncode == 0 and png.exists(), proc.stderr.decode("latin-1")
@@ -136,7 +153,8 @@ def _assert_one_pixel_band(theirs: np.ndarray, ours: np.ndarray, pitch_mm: float
         return ", ".join(f"({i * pitch_mm:.2f}, {j * pitch_mm:.2f})" for j, i in
                          list(zip(js, is_))[:5])
     assert not extra.any() and not missing.any(), (
-        f"{what}: gerbv and the harness differ by more than one pixel ({pitch_mm:.3f} mm): "
+        f"{what}: gerbv and the harness differ by more than {BAND} pixels "
+        f"({BAND * pitch_mm:.3f} mm): "
         f"{int(extra.sum())} pixels only gerbv draws, e.g. at {where(extra)}; "
         f"{int(missing.sum())} pixels only the harness draws, e.g. at {where(missing)} "
         "(mm from the raster's corner)")
@@ -156,6 +174,8 @@ def test_gerbv_renders_every_example_job_as_the_harness_rasters_it(em703_exe, ex
 @given(small=frame_lists(max_items=4), cond=frame_lists(max_items=4),
        tools=st.tuples(st.sampled_from(["0.30", "0.50", "1.20"]),
                        st.sampled_from(["0.20", "0.50", "2.00"])))
+@example(small=[Frame(dx=-11, dy=-862, cyc=12, k=10), Frame(x=0, y=2824, k=11)],
+         cond=[Frame(dy=3684, k=10)], tools=("0.50", "2.00"))
 def test_gerbv_renders_random_jobs_as_the_harness_rasters_them(em703_exe, tmp_path_factory,
                                                                small, cond, tools) -> None:
     tapes = []
