@@ -1,0 +1,158 @@
+"""Every rule of the drawing at its boundary: the value where the rule just
+holds and the value where it just does not, so that a change of `.LT.` to
+`.LE.` or of a count by one anywhere in legacy/ changes a test's verdict.
+
+Found by a mutation run (each mutant a small realistic change to legacy/):
+these are the boundaries no other test reached. The rules are docs/FILLING.md's
+and docs/CARDS.md's:
+
+* a pair of frames repeated N >= 2 times in a row is one cycle (CYC N): two
+  is the least, so a saw of two teeth folds and a saw of one does not;
+* the circles of a round pad step inwards by at most T - OVL (OVL = T/4, at
+  least 0.01 mm and at most 0.10 mm), with the fewest circles that allows;
+* a conductor whose width exceeds its tool by less than 0.02 mm (R1 < 1 unit)
+  is one pass on its centre line; from 0.02 mm on it is drawn in loops;
+* a straight move longer than FMAX is cut into ceil(max(|DX|,|DY|) / FMAX)
+  frames: exactly k FMAX is k frames, one pulse more is k + 1.
+"""
+from __future__ import annotations
+
+import math
+
+import pytest
+
+from harness import cards, sim, tape
+
+
+def _tape(run_tenzor, body: list[str], layer: str, name: str = "EDGE") -> list[tape.Frame]:
+    deck = cards.deck([cards.CardPackage(name, body)], envelope=False)
+    proc, out = run_tenzor(deck)
+    assert proc.returncode == 0, proc.stderr.decode()
+    return list(tape.decode((out / f"{name}-{layer}.ptp").read_bytes()).frames)
+
+
+# ---------------------------------------------------------------------------
+# Cycles: the least repeat that folds.
+# ---------------------------------------------------------------------------
+@pytest.mark.parametrize("teeth", [1, 2, 3])
+def test_a_saw_folds_from_two_teeth_on(run_tenzor, teeth):
+    body = [cards.p_card(1000, 1000, order="D"), cards.l_card(0, 0)]
+    for t in range(teeth):
+        body += [cards.plus_card(400 * t + 300, 400), cards.plus_card(400 * t + 400, 0)]
+    frames = _tape(run_tenzor, body, "cond")
+    drawn = [f for f in frames if f.k == 10]
+    if teeth == 1:
+        assert [(f.dx, f.dy, f.cyc) for f in drawn] == [(300, 400, 0), (100, -400, 0)]
+    else:
+        assert [(f.dx, f.dy, f.cyc) for f in drawn] == [(300, 400, teeth), (100, -400, 0)]
+
+
+# ---------------------------------------------------------------------------
+# Round pads: the circles' step and their number.
+# ---------------------------------------------------------------------------
+def _ovl(t: int) -> int:
+    return max(1, min(10, t // 4))
+
+
+def _rings(frames: list[tape.Frame]) -> list[int]:
+    """The radii of the circles (K13 frames: X is the radius), in order, and a
+    0 for the dot that may end them (a K10 frame that does not move)."""
+    return [f.x if f.k == 13 else 0 for f in frames
+            if f.k == 13 or (f.k == 10 and f.dx == 0 and f.dy == 0)]
+
+
+@pytest.mark.parametrize("tool", [20, 40, 50, 100])
+@pytest.mark.parametrize("extra", range(0, 130, 7))
+def test_round_pad_circles_step_by_at_most_t_minus_ovl_and_are_fewest(run_tenzor, tool, extra):
+    d = tool + 2 + extra
+    if d > 200:
+        pytest.skip("a large pad: the other tape, the same rule")
+    frames = _tape(run_tenzor, [cards.p_card(1000, 1000, w1=tool, w2=tool, order="D"),
+                                cards.d_card(500, 500, d)], "small")
+    rings = _rings(frames)
+    r1 = (d - tool) // 2
+    smax = max(1, tool - _ovl(tool))
+    if r1 == 0:
+        assert rings == [0], "a pad as big as its tool is a dot"
+        return
+    assert rings[0] == r1, "the first circle runs the tool's edge along the rim"
+    steps = [a - b for a, b in zip(rings, rings[1:])]
+    assert all(0 < s <= smax for s in steps), (rings, smax)
+    assert 2 * rings[-1] <= tool, "the last circle (or the dot) covers the centre"
+    # the fewest: with one circle fewer some step would exceed T - OVL
+    n = len(rings)
+    if n > 1:
+        assert 2 * r1 - tool > 2 * smax * (n - 2), (rings, smax)
+
+
+# ---------------------------------------------------------------------------
+# Conductors: one pass or loops.
+# ---------------------------------------------------------------------------
+@pytest.mark.parametrize("over,passes", [(0, "one"), (1, "one"), (2, "loops"), (3, "loops")])
+def test_a_conductor_wider_than_its_tool_by_two_hundredths_is_drawn_in_loops(
+        run_tenzor, over, passes):
+    tool = 50
+    body = [cards.p_card(1000, 1000, w3=tool, order="D"),
+            cards.l_card(0, 0, tool + over), cards.plus_card(1000, 0)]
+    drawn = [f for f in _tape(run_tenzor, body, "cond") if f.k in (10, 11, 12)]
+    if passes == "one":
+        assert [(f.dx, f.dy) for f in drawn] == [(1000, 0)]
+    else:
+        assert len(drawn) > 1
+        ys = set()
+        x = y = 0
+        for f in sim.unroll(_tape(run_tenzor, body, "cond", "EDGE2")):
+            x, y = x + f.dx, y + f.dy
+            if f.k == 10:
+                ys.add(y)
+        assert len(ys) >= 2, "loops run on both sides of the centre line"
+
+
+@pytest.mark.parametrize("tool", [20, 50, 100])
+@pytest.mark.parametrize("extra", [2, 3, 9, 40, 41, 80, 81, 150, 237, 300])
+def test_conductor_loops_step_by_at_most_t_minus_ovl_and_are_fewest(run_tenzor, tool, extra):
+    """A straight conductor of width W: loops at offsets R1 = (W - T)/2 inwards
+    by at most T - OVL, the last within T/2 - 0.01 mm of the centre line (or
+    a pass on it), the fewest loops that allow it. On a horizontal conductor
+    each loop's end arcs (K11 or K13) have the loop's offset as their Y."""
+    w = tool + extra
+    body = [cards.p_card(1000, 1000, w3=tool, order="D"),
+            cards.l_card(0, 0, w), cards.plus_card(2000, 0)]
+    frames = _tape(run_tenzor, body, "cond")
+    offsets = sorted({abs(f.y) for f in frames if f.k in (11, 13)}, reverse=True)
+    # each loop has two straight runs the conductor's length; one more is a
+    # pass on the centre line
+    runs = [f for f in frames if f.k == 10 and f.dy == 0 and abs(f.dx) == 2000]
+    rings = offsets + ([0] if len(runs) > 2 * len(offsets) else [])
+    r1 = (w - tool) / 2
+    smax = max(1, tool - _ovl(tool))
+    assert abs(rings[0] - r1) <= 0.5, (rings, r1)
+    steps = [a - b for a, b in zip(rings, rings[1:])]
+    assert all(0 < s <= smax for s in steps), (rings, smax)
+    assert rings[-1] <= (tool - 2) / 2 + 0.5, "the last loop covers the centre line"
+    n = len(rings)
+    if n > 1:
+        assert 2 * r1 - (tool - 2) > 2 * smax * (n - 2), (rings, smax)
+
+
+# ---------------------------------------------------------------------------
+# The frame limit: exactly k FMAX is k frames.
+# ---------------------------------------------------------------------------
+@pytest.mark.parametrize("length,frames", [(2999, 3), (3000, 3), (3001, 4), (1000, 1),
+                                           (1001, 2)])
+def test_a_move_of_exactly_k_fmax_is_k_frames(run_tenzor, length, frames):
+    fmax = 1000
+
+    def f10(v: int) -> str:
+        return f"{v / 100:.2f}".rjust(10)
+    deck = ("LIMIT\n" + f"P {fmax:8d}" + f10(10000) + f10(10000) + "\n"
+            + "L" + " " * 9 + f10(0) + f10(0) + "\n+" + " " * 9 + f10(length) + f10(0)
+            + "\nE\n")
+    proc, out = run_tenzor(deck)
+    assert proc.returncode == 0, proc.stderr.decode()
+    got = tape.decode((out / "LIMIT-cond.ptp").read_bytes()).frames
+    drawn = [f for f in sim.unroll(list(got)) if f.k == 10]
+    assert len(drawn) == frames, drawn
+    assert sum(f.dx for f in drawn) == length
+    assert max(f.dx for f in drawn) - min(f.dx for f in drawn) <= 1
+    assert math.ceil(length / fmax) == frames

@@ -1,0 +1,170 @@
+"""`make mutants`: how many realistic small faults in legacy/ and src/ the
+tests catch (mutation testing; not run by CI: it takes a while).
+
+Each mutant below is one change a programmer could make by mistake: a
+comparison off by one, a constant slightly wrong, a rule's limit moved. For
+each, the file is changed in place, the programs are rebuilt (fpm rebuilds
+only what changed), and the tests that run TENZOR and em703 (`pytest -m
+"tenzor or em703" -x`) and the Fortran unit tests run against them; the
+mutant is killed when any test fails. The file is always restored, also when
+the run is interrupted; the script refuses to start on a tree whose legacy/
+or src/ has uncommitted changes. It prints a table and the score; the table
+is kept in docs/ROBUSTNESS.md.
+
+A mutant that changes no output (an equivalent mutant) cannot be killed and
+is marked so in the list, with the reason; the score counts the others.
+"""
+from __future__ import annotations
+
+import subprocess
+import sys
+import time
+from dataclasses import dataclass
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parents[1]
+
+
+@dataclass(frozen=True)
+class Mutant:
+    path: str
+    old: str
+    new: str
+    what: str
+    equivalent: str = ""            # why no output can change, if so
+
+
+MUTANTS = [
+    # the four boundaries the first mutation run found untested
+    Mutant("legacy/cmfold.f", "      IF (NC .GE. 2) THEN", "      IF (NC .GE. 3) THEN",
+           "a pair repeated twice is no longer a cycle"),
+    Mutant("legacy/mtbody.f", "            ISMAX = MAX(1, IT - IOVL)",
+           "            ISMAX = MAX(1, IT - IOVL + 1)",
+           "round-pad circles step one unit over T - OVL"),
+    Mutant("legacy/mlbody.f", "      IF (R1 .LT. 1.0D0) THEN", "      IF (R1 .LE. 1.0D0) THEN",
+           "a conductor 0.02 mm wider than its tool gets one pass"),
+    Mutant("legacy/cmspl1.f", "IF (IFMAX .GT. 0) N = (MAX(ABS(IDX), ABS(IDY)) + IFMAX - 1)",
+           "IF (IFMAX .GT. 0) N = (MAX(ABS(IDX), ABS(IDY)) + IFMAX)",
+           "a move of exactly k FMAX is cut into k + 1 frames"),
+    # more of the same kind
+    Mutant("legacy/mtbody.f", "         IR = (IW - IT) / 2", "         IR = (IW - IT + 1) / 2",
+           "round pad's first circle half a unit out"),
+    Mutant("legacy/mtbody.f", "      IOVL = MAX(1, MIN(10, IT / 4))",
+           "      IOVL = MAX(1, MIN(9, IT / 4))", "pad overlap limit 0.09 mm"),
+    Mutant("legacy/mlbody.f", "      IOVL = MAX(1, MIN(10, IT / 4))",
+           "      IOVL = MAX(1, MIN(10, IT / 5))", "conductor overlap T/5"),
+    Mutant("legacy/mtpads.f", "         IF (MAX(KPW(I), KPH(I)) .GT. IDMAX) IC = 2",
+           "         IF (MAX(KPW(I), KPH(I)) .GE. IDMAX) IC = 2",
+           "a pad of exactly Dmax goes to the large-pad tape"),
+    Mutant("legacy/cmstat.f", "NROWT(IU) * 2.54D0 / 1.0D3", "NROWT(IU) * 2.50D0 / 1.0D3",
+           "tape length 2.50 mm a row"),
+    Mutant("legacy/cmfdp.f", "      NR = INT(R * 100.0D0 + 0.5D0)",
+           "      NR = INT(R * 100.0D0 + 0.4D0)", "listing decimals rounded at 0.4"),
+    Mutant("legacy/tzpbeg.f", "         IF (CMSAME(PKNAMS(I), PKFILE)) THEN",
+           "         IF (PKNAMS(I) .EQ. PKFILE) THEN", "names differing in case not duplicates"),
+    Mutant("legacy/cmerr.f", "      IF (NERR .GT. MXERR + 1) RETURN",
+           "      IF (NERR .GT. MXERR + 2) RETURN", "one error message past the limit"),
+    Mutant("legacy/tzdcrd.f",
+           "         IF (ABS(DBLE(IX) + DBLE(N - 1) * ISX) .GT. 12000000.0D0) THEN",
+           "         IF (ABS(DBLE(IX) + DBLE(N - 1) * ISX) .GT. 12000100.0D0) THEN",
+           "a row of pads 1 mm past the coordinate limit accepted"),
+    Mutant("legacy/cmpnum.f", "      IF (IVAL .EQ. 0) RETURN", "      IF (IVAL .EQ. 1) RETURN",
+           "the number 1 is not punched"),
+    Mutant("legacy/cmsim.f", "      PARAMETER (FLD = 120000.0D0, BIG = 999999999.0D0)",
+           "      PARAMETER (FLD = 120100.0D0, BIG = 999999999.0D0)",
+           "the field 1 mm larger"),
+    Mutant("legacy/tenzor.f",
+           "      IF (ICGM .NE. 31 .OR. ICX .EQ. ICY .OR. ICDIG(9, 1) .NE. 9) THEN",
+           "      IF (ICGM .NE. 31 .OR. ICX .EQ. ICY) THEN",
+           "the code table check without the digits", "the table TZCODE sets always "
+           "passes both checks; only a build without TZCODE reaches them (test_linkers)"),
+    # src/: the tools and the monitor
+    Mutant("src/em703/em703_sim.f90",
+           "LINE_SPEED = 5500.0_real64, ARC_SPEED = 1500.0_real64",
+           "LINE_SPEED = 5500.0_real64, ARC_SPEED = 1600.0_real64", "arcs at 1.6 m/min"),
+    Mutant("src/em703/em703_sim.f90", "TRAVEL_SPEED = 5500.0_real64",
+           "TRAVEL_SPEED = 5000.0_real64", "travel at 5.0 m/min"),
+    Mutant("src/monitor/monitor_devices.f90",
+           "call sheet%line(trim(tape_suffix(i)) // '.bytes = ' // itoa(tape(i)%n))",
+           "call sheet%line(trim(tape_suffix(i)) // '.bytes = ' // itoa(tape(i)%n + 1))",
+           "the job sheet records a tape one byte long"),
+    Mutant("src/base/base_sha256.f90", "            w(t) = iand(w(t-16) + s0 + w(t-7) + s1, m32)",
+           "            w(t) = iand(w(t-16) + s0 + w(t-6) + s1, m32)", "SHA-256 schedule"),
+    Mutant("src/base/base_files.c", "    if (tmp[0] == '\\0') return 0;  /* written straight",
+           "    if (tmp[0] != '\\0') return 0;  /* written straight",
+           "staged files never renamed into place"),
+    Mutant("src/em703/em703_commands.f90", "            if (same_file(out, inputs(i)%path)) then",
+           "            if (.false.) then", "outputs over inputs allowed"),
+    Mutant("src/em703/em703_jobsheet.f90",
+           "        ok = a >= 1 .and. a <= 100 .and. b >= 1 .and. b <= 100",
+           "        ok = a >= 1 .and. a <= 100 .and. b >= 1 .and. b <= 99",
+           "scale 1:100 refused"),
+    Mutant("src/monitor/monitor_devices.f90",
+           "            if (deck(last:last) == achar(13)) last = last - 1",
+           "            if (deck(last:last) == achar(10)) last = last - 1",
+           "card reader keeps the CR of a CRLF deck"),
+]
+
+TESTS = ["python", "-m", "pytest", "-q", "-x", "-p", "no:cacheprovider", "-m",
+         "tenzor or em703"]
+
+
+def _run(cmd: list[str], timeout: int = 1800) -> bool:
+    proc = subprocess.run(cmd, cwd=ROOT, capture_output=True, text=True, timeout=timeout)
+    return proc.returncode == 0
+
+
+def killed(m: Mutant) -> tuple[bool, str]:
+    """Apply m, rebuild, test; restore. (killed, by what)."""
+    path = ROOT / m.path
+    text = path.read_text()
+    if text.count(m.old) != 1:
+        return False, f"NOT APPLIED: the text is not in {m.path} exactly once"
+    try:
+        path.write_text(text.replace(m.old, m.new))
+        if not _run(["fpm", "build"]):
+            return True, "the build"
+        if not _run(["fpm", "test"]):
+            return True, "fpm test"
+        if not _run(TESTS):
+            return True, "pytest"
+        return False, "survived"
+    finally:
+        path.write_text(text)
+
+
+def main() -> int:
+    dirty = subprocess.run(["git", "status", "--porcelain", "legacy", "src"], cwd=ROOT,
+                           capture_output=True, text=True).stdout
+    if dirty.strip():
+        print("mutants: legacy/ or src/ has uncommitted changes; commit or stash them "
+              "first (each mutant edits a file in place)", file=sys.stderr)
+        return 2
+    rows, kills, counted = [], 0, 0
+    start = time.monotonic()
+    try:
+        for n, m in enumerate(MUTANTS, 1):
+            t = time.monotonic()
+            dead, by = killed(m)
+            if not m.equivalent:
+                counted += 1
+                kills += dead
+            verdict = "killed" if dead else ("equivalent" if m.equivalent else "SURVIVED")
+            rows.append((m, verdict, by))
+            print(f"{n:2d}/{len(MUTANTS)} {verdict:10s} {m.path}: {m.what} "
+                  f"({by}, {time.monotonic() - t:.0f} s)", flush=True)
+    finally:
+        _run(["fpm", "build"])
+    print()
+    print("| file | mutant | verdict | caught by |")
+    print("|---|---|---|---|")
+    for m, verdict, by in rows:
+        print(f"| `{m.path}` | {m.what} | {verdict} | {m.equivalent or by} |")
+    score = 100.0 * kills / counted if counted else 0.0
+    print(f"\n{kills} of {counted} non-equivalent mutants killed ({score:.1f} %), "
+          f"{len(MUTANTS) - counted} equivalent; {time.monotonic() - start:.0f} s")
+    return 0 if score >= 95.0 else 1
+
+
+if __name__ == "__main__":
+    sys.exit(main())
