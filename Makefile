@@ -14,6 +14,8 @@
 #                      again, on a build with gfortran's run-time checks
 #   make test-cpus     the raster, verify and coverage tests again with numpy's
 #                      AVX-512 paths disabled, and again without AVX2 either
+#   make mutants       mutation testing (scripts/mutants.py): realistic small faults in
+#                      legacy/ and src/, and how many the tests catch (tens of minutes)
 #   make fuzz          exploration, not a verdict: the fuzz suites with new random
 #                      cases (2500 a property) against the build with run-time checks;
 #                      a failure it finds becomes an @example (docs/ROBUSTNESS.md)
@@ -32,7 +34,7 @@ CHECKS := -fcheck=all -ffpe-trap=invalid,zero,overflow -ftrapv
 # The built program is run directly: `fpm run` would add its own progress lines.
 TENZOR = "$$(fpm run --runner echo tenzor 2>/dev/null | tail -n 1)"
 
-.PHONY: demo examples test test-checks test-cpus fuzz bench setup build f2c flang
+.PHONY: demo examples test test-checks test-cpus fuzz mutants bench setup build f2c flang
 
 setup:
 	@bash scripts/setup.sh
@@ -56,6 +58,9 @@ test-checks: setup
 	TENZOR_EXE="$$(fpm run --profile debug --flag "$(CHECKS)" --runner echo tenzor 2>/dev/null | tail -n 1)" \
 	EM703_EXE="$$(fpm run --profile debug --flag "$(CHECKS)" --runner echo em703 2>/dev/null | tail -n 1)" \
 		python -m pytest -m "tenzor or em703"
+
+mutants: build
+	python scripts/mutants.py
 
 FUZZ_TESTS := harness/tests/tenzor/test_fuzz_tenzor.py harness/tests/em703/test_fuzz_em703.py \
 	harness/tests/legacy/test_judges.py
