@@ -12,19 +12,20 @@ program tenzor_shell
     implicit none
 
     interface
-        subroutine tenzor(icodea, irc)
-            integer, intent(in) :: icodea
+        subroutine tenzor(icodea, lstrca, irc)
+            integer, intent(in) :: icodea, lstrca
             integer, intent(out) :: irc
         end subroutine tenzor
     end interface
 
     character(len=:), allocatable :: deck_path, out_dir, msg, arg
-    integer :: icode, irc, i, nargs
+    integer :: icode, istrict, irc, i, nargs
     logical :: ok
 
     deck_path = ''
     out_dir = 'out'
     icode = 0
+    istrict = 0
     nargs = command_argument_count()
     i = 1
     do while (i <= nargs)
@@ -41,6 +42,8 @@ program tenzor_shell
             i = i + 1
             out_dir = get_arg(i)
             if (len(out_dir) == 0) call fail('option -o needs a directory, not an empty string')
+        case ('--strict')
+            istrict = 1
         case ('--code')
             if (i == nargs) call fail('option --code needs 8 or K')
             i = i + 1
@@ -72,7 +75,7 @@ program tenzor_shell
     call dev_set_output(out_dir, ok)
     if (.not. ok) call fail('cannot create the output directory ' // out_dir)
 
-    call tenzor(icode, irc)
+    call tenzor(icode, istrict, irc)
 
     if (dev_io_failed() .or. irc == 2) stop 2, quiet=.true.
     if (irc /= 0) stop 1, quiet=.true.
@@ -81,7 +84,7 @@ contains
 
     subroutine usage(unit)
         integer, intent(in) :: unit
-        write(unit, '(a)') 'usage: tenzor [DECK] [-o DIR] [--code 8|K]', &
+        write(unit, '(a)') 'usage: tenzor [DECK] [-o DIR] [--code 8|K] [--strict]', &
             '', &
             'Reads a card deck (DECK, or standard input) and punches, for each package,', &
             'the three EM-703 tapes NAME-small.ptp, NAME-large.ptp, NAME-cond.ptp with', &
@@ -89,6 +92,8 @@ contains
             '', &
             '  -o DIR      output directory (default: out; created if missing)', &
             '  --code 8|K  tape code: 8 plain, K with control; overrides the P card', &
+            '  --strict    warnings are errors: data in columns a card does not read', &
+            '              stops its package (no tapes), as any error does', &
             '  -h, --help  this text', &
             '  --version   the version', &
             '', &
@@ -99,7 +104,7 @@ contains
     subroutine fail(text)
         character(len=*), intent(in) :: text
         write(error_unit, '(a)') 'tenzor: ' // text
-        write(error_unit, '(a)') 'usage: tenzor [DECK] [-o DIR] [--code 8|K]  (tenzor --help)'
+        write(error_unit, '(a)') 'usage: tenzor [DECK] [-o DIR] [--code 8|K] [--strict]  (tenzor --help)'
         stop 2, quiet=.true.
     end subroutine fail
 

@@ -196,6 +196,52 @@ def _blank(card: str, cols: Sequence[tuple[int, int]], no: int) -> None:
             raise CardError(no, f"columns {a}-{b} must be blank: {_cols(card, a, b)!r}")
 
 
+#: The number fields of each data card type: (first column, last column,
+#: implied decimals); docs/CARDS.md's tables.
+FIELDS: dict[str, tuple[tuple[int, int, int], ...]] = {
+    "P": ((3, 10, 0), (11, 20, 2), (21, 30, 2), (31, 38, 2), (39, 46, 2), (47, 54, 2),
+          (55, 62, 2), (63, 65, 0), (66, 68, 0)),
+    "D": ((11, 20, 2), (21, 30, 2), (31, 38, 2), (39, 46, 2), (47, 50, 0), (51, 60, 2),
+          (61, 70, 2)),
+    "L": ((11, 20, 2), (21, 30, 2), (31, 38, 2)),
+    "+": ((11, 20, 2), (21, 30, 2)),
+    "O": ((11, 20, 2), (21, 30, 2), (31, 40, 2)),
+    "A": tuple((a, a + 9, 2) for a in (11, 21, 31, 41, 51, 61)),
+    "M": ((11, 20, 2), (21, 30, 2), (31, 40, 2), (41, 50, 2), (51, 55, 0), (56, 60, 0)),
+}
+#: The letter columns of each type and the letters they accept.
+LETTERS: dict[str, tuple[tuple[int, str], ...]] = {
+    "P": ((70, " 8K"), (71, " OD")), "O": ((2, "+-"),), "A": ((2, "+-"),),
+    "M": ((2, " SBL"),),
+}
+
+
+def reads_as_data(card: str) -> str | None:
+    """The type of data card a name card reads as, or None (docs/CARDS.md,
+    "Packages"): column 1 is a data card type, every number field of the
+    type is a well-formed number or blank and one at least is not blank,
+    its letter columns hold letters it accepts, and no other column of
+    2-72 is used."""
+    kind = card[:1]
+    if kind not in FIELDS:
+        return None
+    used = {1}
+    for a, b, _ in FIELDS[kind]:
+        used.update(range(a, b + 1))
+    for col, ok in LETTERS.get(kind, ()):
+        used.add(col)
+        if _cols(card, col, col) not in ok:
+            return None
+    if any(c != " " and i not in used for i, c in enumerate(card.ljust(72)[:72], 1)):
+        return None
+    try:
+        values = [real(card, a, b, 0, None) if d else integer(card, a, b, 0, None)
+                  for a, b, d in FIELDS[kind]]
+    except CardError:
+        return None
+    return kind if any(v is not None for v in values) else None
+
+
 def _need(value: int | None, no: int, what: str) -> int:
     if value is None:
         raise CardError(no, f"{what} is required")
@@ -468,11 +514,16 @@ def parse_deck(text: str) -> list[Package]:
             builder = _Builder(card[:18].rstrip(), no)
             if not builder.name.strip():
                 raise CardError(no, "blank package name")
+            kind = reads_as_data(card)
+            if kind is not None:
+                raise CardError(no, f"the name card reads as a {kind} card: "
+                                    f"is the name card missing? {card!r}")
             _blank(card, [(19, 72)], no)
             state = "data"
             continue
         assert builder is not None
         if card[0] in "CE":
+            _blank(card, [(2, 72)], no)
             packages.append(builder.package())
             state = "name" if card[0] == "C" else "done"
             builder = None

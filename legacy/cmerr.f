@@ -22,9 +22,10 @@ C=======================================================================
 C     ---- /TZJOB/ THE JOB: CARD COUNT, ENVELOPE, PACKAGE NAMES ------
       INTEGER MXENV, MXPKG
       PARAMETER (MXENV = 20, MXPKG = 10000)
-      INTEGER NCARD, JOBERR, ICODEO, NENV, NPKG, IRCJOB, LEXEC, LENV
+      INTEGER NCARD, JOBERR, ICODEO, NENV, NPKG, IRCJOB, LEXEC, LENV,
+     1        LSTRCT
       COMMON /TZJOB/ NCARD, JOBERR, ICODEO, NENV, NPKG, IRCJOB, LEXEC,
-     1               LENV
+     1               LENV, LSTRCT
       CHARACTER*80 ENVC(MXENV)
       CHARACTER*24 PKNAMS(MXPKG)
       CHARACTER*40 JOBNAM
@@ -35,10 +36,11 @@ C     ---- /TZPKG/ THE PACKAGE: P CARD PARAMETERS, ITS CARD IMAGES ---
       INTEGER MXCRD
       PARAMETER (MXCRD = 200000)
       INTEGER LPKG, ICFST, NPCRD, NPERR, LECHO, IPCRD, LGEOM,
-     1        IX0, IY0, IWT(3), IDMAX, ISCN, ISCD, ICODE, IORD, IFMAX
+     1        IX0, IY0, IWT(3), IDMAX, ISCN, ISCD, ICODE, IORD, IFMAX,
+     2        NPWRN
       COMMON /TZPKG/ LPKG, ICFST, NPCRD, NPERR, LECHO, IPCRD, LGEOM,
      1               IX0, IY0, IWT, IDMAX, ISCN, ISCD, ICODE, IORD,
-     2               IFMAX
+     2               IFMAX, NPWRN
       CHARACTER*18 PKNAME
       CHARACTER*24 PKFILE
       CHARACTER*80 CIMG(MXCRD)
@@ -51,7 +53,7 @@ C     ---- LOCAL -------------------------------------------------------
       CHARACTER*128 CARET
       CHARACTER*12 S1, S2
       CHARACTER*8 SEQ
-      INTEGER L1, L2, LL, IDX, NERR
+      INTEGER L1, L2, LL, IDX, NERR, LP
 C
       IRCJOB = 1
       SEQ = ' '
@@ -93,11 +95,12 @@ C     ---- COUNT IT, AND SAY IT IF STILL UNDER THE LIMIT ---------------
 C        (A DUMMY OF ASSUMED LENGTH, PROG, MAY BE CONCATENATED ONLY IN
 C        AN ASSIGNMENT: THE LINE IS BUILT FIRST, THEN PRINTED)
          CALL CMITOA(MXERR, S1, L1)
+         CALL CMTRIM(PKFILE, LP)
          IF (LPKG .EQ. 1) THEN
             CALL DVPRNT(' *** TOO MANY ERRORS: ONLY THE FIRST '
      1                  // S1(1:L1) // ' OF THIS PACKAGE ARE LISTED')
             LINE = PROG // ' ERROR: TOO MANY ERRORS IN PACKAGE '
-     1             // PKFILE // ', ONLY THE FIRST ' // S1(1:L1)
+     1             // PKFILE(1:LP) // ', ONLY THE FIRST ' // S1(1:L1)
      2             // ' ARE LISTED'
          ELSE
             LINE = PROG // ' ERROR: TOO MANY ERRORS OUTSIDE THE '
