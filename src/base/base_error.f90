@@ -8,7 +8,7 @@
 module base_error
     implicit none
     private
-    public :: error_t, new_error, error_text, set_file
+    public :: error_t, new_error, error_text, set_file, no_memory
 
     !> Where the error is: nowhere, a row of a tape (1 = first byte), or a
     !> line (and column, 0 = the whole line) of a text file.
@@ -69,5 +69,24 @@ contains
         end select
         if (allocated(err%message)) text = text // err%message
     end function error_text
+
+    !> Memory that cannot be had ends the run with a message and exit status
+    !> 2, never with the Fortran runtime's allocation error: every allocate
+    !> whose size comes from the input has stat= and calls this on failure.
+    !> what says what the memory was for; nbytes about how much was asked.
+    subroutine no_memory(what, nbytes)
+        use, intrinsic :: iso_fortran_env, only: error_unit, int64
+        character(len=*), intent(in) :: what
+        integer(int64), intent(in) :: nbytes
+        character(len=4096) :: prog
+        character(len=24) :: num
+        integer :: n, ios
+        call get_command_argument(0, prog, n)
+        n = index(prog, '/', back=.true.)
+        write(num, '(i0)') max(1_int64, nbytes / 1048576_int64)
+        write(error_unit, '(a)', iostat=ios) trim(prog(n + 1:)) // ': not enough memory for ' // &
+            what // ' (about ' // trim(num) // ' MB more); no half-made output is left'
+        stop 2, quiet=.true.
+    end subroutine no_memory
 
 end module base_error

@@ -176,3 +176,52 @@ void em_strerror(int rc, char *msg, size_t cap)
 {
     snprintf(msg, cap, "%s", strerror(rc));
 }
+
+/*
+ * Whole-file input. A file is opened for reading (a directory is refused
+ * with EISDIR); *size is its size when it is a regular file, else -1: a
+ * pipe, a FIFO, /dev/stdin or a terminal, whose size is known only at its
+ * end, is read until end of file (em_read), never taken as empty.
+ */
+int em_open_read(const char *path, int *fd, long long *size)
+{
+    struct stat st;
+    *fd = -1;
+    *size = -1;
+    int f = open(path, O_RDONLY | O_CLOEXEC);
+    if (f < 0) return errno;
+    if (fstat(f, &st) != 0) {
+        int rc = errno;
+        close(f);
+        return rc;
+    }
+    if (S_ISDIR(st.st_mode)) {
+        close(f);
+        return EISDIR;
+    }
+    if (S_ISREG(st.st_mode)) *size = (long long)st.st_size;
+    *fd = f;
+    return 0;
+}
+
+/* Up to cap bytes into buf, fewer only at end of file: the count read, or
+ * minus the errno value. Interrupted reads are resumed. */
+long long em_read(int fd, char *buf, size_t cap)
+{
+    size_t got = 0;
+    while (got < cap) {
+        ssize_t n = read(fd, buf + got, cap - got);
+        if (n < 0) {
+            if (errno == EINTR) continue;
+            return -(long long)errno;
+        }
+        if (n == 0) break;
+        got += (size_t)n;
+    }
+    return (long long)got;
+}
+
+void em_close_read(int fd)
+{
+    if (fd >= 0) close(fd);
+}

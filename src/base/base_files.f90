@@ -8,11 +8,11 @@
 !> mix their files. A target that is a device or a FIFO (/dev/stdout) is
 !> written straight into.
 module base_files
-    use, intrinsic :: iso_c_binding, only: c_int, c_char, c_null_char, c_size_t
+    use, intrinsic :: iso_c_binding, only: c_int, c_char, c_null_char, c_size_t, c_long_long
     implicit none
     private
     public :: write_whole, stage_file, commit_file, discard_file
-    public :: lock_dir, unlock_dir, same_file
+    public :: lock_dir, unlock_dir, same_file, read_whole
 
     interface
         function c_stage(path, data, n, tmp, cap) bind(c, name='em_stage') result(rc)
@@ -46,6 +46,24 @@ module base_files
             character(kind=c_char), intent(in) :: a(*), b(*)
             integer(c_int) :: rc
         end function c_same_file
+        function c_open_read(path, fd, size) bind(c, name='em_open_read') result(rc)
+            import :: c_int, c_char, c_long_long
+            character(kind=c_char), intent(in) :: path(*)
+            integer(c_int), intent(out) :: fd
+            integer(c_long_long), intent(out) :: size
+            integer(c_int) :: rc
+        end function c_open_read
+        function c_read(fd, buf, cap) bind(c, name='em_read') result(n)
+            import :: c_int, c_char, c_size_t, c_long_long
+            integer(c_int), value :: fd
+            character(kind=c_char), intent(inout) :: buf(*)
+            integer(c_size_t), value :: cap
+            integer(c_long_long) :: n
+        end function c_read
+        subroutine c_close_read(fd) bind(c, name='em_close_read')
+            import :: c_int
+            integer(c_int), value :: fd
+        end subroutine c_close_read
         subroutine c_strerror(rc, msg, cap) bind(c, name='em_strerror')
             import :: c_int, c_char, c_size_t
             integer(c_int), value :: rc
@@ -57,6 +75,71 @@ module base_files
     integer, parameter :: path_cap = 4352
 
 contains
+
+    !> Read the whole file path into text. msg is empty when it is done, else
+    !> the reason. A regular file is read into a buffer of its size; a pipe,
+    !> a FIFO or /dev/stdin, whose size is known only at its end, is read
+    !> until end of file into a buffer that doubles as it fills. Memory that
+    !> cannot be had is a message, not a crash.
+    subroutine read_whole(path, text, msg)
+        character(len=*), intent(in) :: path
+        character(len=:), allocatable, intent(out) :: text
+        character(len=:), allocatable, intent(out) :: msg
+        character(len=:), allocatable :: bigger
+        integer(c_int) :: rc, fd
+        integer(c_long_long) :: size, n, got, cap
+        integer :: st
+        msg = ''
+        rc = c_open_read(path // c_null_char, fd, size)
+        if (rc /= 0) then
+            text = ''
+            msg = "cannot open: " // os_message(rc)
+            return
+        end if
+        cap = size
+        if (size < 0) cap = 65536
+        allocate(character(len=cap) :: text, stat=st)
+        if (st /= 0) then
+            call c_close_read(fd)
+            text = ''
+            msg = 'cannot read: not enough memory for ' // int_text(cap) // ' bytes'
+            return
+        end if
+        got = 0
+        do
+            n = 0
+            if (got < cap) n = c_read(fd, text(got + 1:), int(cap - got, c_size_t))
+            if (n < 0) then
+                call c_close_read(fd)
+                text = ''
+                msg = "cannot read: " // os_message(int(-n, c_int))
+                return
+            end if
+            got = got + n
+            if (got < cap .or. size >= 0) exit
+            ! the buffer is full and the size was not known: double it
+            allocate(character(len=2 * cap) :: bigger, stat=st)
+            if (st /= 0) then
+                call c_close_read(fd)
+                text = ''
+                msg = 'cannot read: not enough memory for ' // int_text(2 * cap) // ' bytes'
+                return
+            end if
+            bigger(1:cap) = text
+            call move_alloc(bigger, text)
+            cap = 2 * cap
+        end do
+        call c_close_read(fd)
+        if (got < cap) text = text(1:got)
+    end subroutine read_whole
+
+    function int_text(v) result(s)
+        integer(c_long_long), intent(in) :: v
+        character(len=:), allocatable :: s
+        character(len=24) :: buf
+        write(buf, '(i0)') v
+        s = trim(buf)
+    end function int_text
 
     !> Write data as the whole file path. msg is empty when it is done, else
     !> the reason (the file is then as it was before).

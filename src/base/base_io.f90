@@ -5,9 +5,9 @@
 !> statement that can fail has iostat and iomsg; failures come back as an
 !> error_t naming the file.
 module base_io
-    use, intrinsic :: iso_fortran_env, only: output_unit, error_unit
-    use base_error, only: error_t, new_error
-    use base_files, only: write_whole
+    use, intrinsic :: iso_fortran_env, only: output_unit, error_unit, int64
+    use base_error, only: error_t, new_error, no_memory
+    use base_files, only: write_whole, read_whole
     implicit none
     private
     public :: read_bytes, read_text, write_bytes, write_text, print_text, dir_of, say
@@ -19,42 +19,20 @@ contains
         character(len=*), intent(in) :: path
         character(len=:), allocatable, intent(out) :: text
         type(error_t), allocatable, intent(out) :: err
-        integer :: u, ios, size_
-        character(len=256) :: msg
+        character(len=:), allocatable :: msg
         logical :: exists
-        text = ''
         inquire(file=path, exist=exists)
         if (.not. exists) then
+            text = ''
             call new_error(err, 'cannot open: no such file')
             err%file = path
             return
         end if
-        open(newunit=u, file=path, access='stream', form='unformatted', status='old', &
-             action='read', iostat=ios, iomsg=msg)
-        if (ios /= 0) then
-            call new_error(err, 'cannot open: ' // trim(msg))
+        call read_whole(path, text, msg)
+        if (len(msg) > 0) then
+            call new_error(err, msg)
             err%file = path
-            return
         end if
-        inquire(unit=u, size=size_)
-        if (size_ < 0) then
-            close(u, iostat=ios)
-            call new_error(err, 'cannot read: not a regular file')
-            err%file = path
-            return
-        end if
-        deallocate(text)
-        allocate(character(len=size_) :: text)
-        if (size_ > 0) then
-            read(u, iostat=ios, iomsg=msg) text
-            if (ios /= 0) then
-                close(u, iostat=ios)
-                call new_error(err, 'cannot read: ' // trim(msg))
-                err%file = path
-                return
-            end if
-        end if
-        close(u, iostat=ios)
     end subroutine read_text
 
     !> The whole file as byte values 0..255, one per row of a tape image.
@@ -63,9 +41,10 @@ contains
         integer, allocatable, intent(out) :: rows(:)
         type(error_t), allocatable, intent(out) :: err
         character(len=:), allocatable :: text
-        integer :: i
+        integer :: i, st
         call read_text(path, text, err)
-        allocate(rows(len(text)))
+        allocate(rows(len(text)), stat=st)
+        if (st /= 0) call no_memory('the tape', 4 * int(len(text), int64))
         if (allocated(err)) return
         do i = 1, len(text)
             rows(i) = iachar(text(i:i))
@@ -78,8 +57,9 @@ contains
         integer, intent(in) :: rows(:)
         type(error_t), allocatable, intent(out) :: err
         character(len=:), allocatable :: text
-        integer :: i
-        allocate(character(len=size(rows)) :: text)
+        integer :: i, st
+        allocate(character(len=size(rows)) :: text, stat=st)
+        if (st /= 0) call no_memory('the tape', int(size(rows), int64))
         do i = 1, size(rows)
             text(i:i) = achar(iand(rows(i), 255))
         end do

@@ -3,6 +3,8 @@
 !> byte. Thin bindings to the C library.
 module base_os
     use, intrinsic :: iso_c_binding, only: c_int, c_char, c_null_char, c_size_t, c_long
+    use, intrinsic :: iso_fortran_env, only: int64
+    use base_error, only: no_memory
     implicit none
     private
     public :: make_dirs, rename_file, remove_file, is_dir, read_fd
@@ -60,7 +62,7 @@ contains
         integer, parameter :: chunk = 65536
         character(len=chunk) :: buf
         character(len=:), allocatable :: tmp
-        integer :: n, have
+        integer :: n, have, st
         integer(c_long) :: got
         allocate(character(len=chunk) :: data)
         have = 0
@@ -77,7 +79,9 @@ contains
                 return
             end if
             if (have + n > len(data)) then
-                allocate(character(len=len(data) + min(len(data), max_bytes - len(data))) :: tmp)
+                allocate(character(len=len(data) + min(len(data), max_bytes - len(data))) :: tmp, &
+                         stat=st)
+                if (st /= 0) call no_memory('the input', 2 * int(len(data), int64))
                 tmp(1:have) = data(1:have)
                 call move_alloc(tmp, data)
             end if

@@ -3,6 +3,7 @@
 !> a negative zero, octal).
 module base_text
     use, intrinsic :: iso_fortran_env, only: int64, real64
+    use base_error, only: no_memory
     implicit none
     private
     public :: text_t, str, fixed, mm, octal, lower, starts_with, ends_with, parse_int, parse_mm, &
@@ -36,11 +37,15 @@ contains
         class(text_t), intent(inout) :: self
         character(len=*), intent(in) :: chars
         character(len=:), allocatable :: bigger
-        integer :: need
+        integer :: need, st
         need = self%n + len(chars)
-        if (.not. allocated(self%s)) allocate(character(len=max(4096, need)) :: self%s)
+        if (.not. allocated(self%s)) then
+            allocate(character(len=max(4096, need)) :: self%s, stat=st)
+            if (st /= 0) call no_memory('the text', int(need, int64))
+        end if
         if (need > len(self%s)) then
-            allocate(character(len=max(need, 2 * len(self%s))) :: bigger)
+            allocate(character(len=max(need, 2 * len(self%s))) :: bigger, stat=st)
+            if (st /= 0) call no_memory('the text', 2 * int(len(self%s), int64))
             bigger(1:self%n) = self%s(1:self%n)
             call move_alloc(bigger, self%s)
         end if

@@ -13,11 +13,11 @@
 !> found only when the data ends names the row just past the last one.
 module em703_codec
     use, intrinsic :: iso_fortran_env, only: int64, real64
-    use base_error, only: error_t, new_error, AT_ROW
+    use base_error, only: error_t, new_error, AT_ROW, no_memory
     use base_text, only: str, octal, fixed, text_t
     implicit none
     private
-    public :: frame_t, tape_t, decode_tape, encode_tape, frame_rows, frame_text, &
+    public :: frame_t, tape_t, decode_tape, decode_bytes, encode_tape, frame_rows, frame_text, &
               tape_text, on_circle, frame_problem, describe_row
 
     ! Table I: service codes (octal), the same in both variants.
@@ -77,7 +77,7 @@ module em703_codec
     end type row_t
 
     type :: reader_t
-        integer, allocatable :: data(:)
+        character(len=:), allocatable :: data   !< the tape image, a byte a row
         integer :: i = 0              !< rows consumed
         character(len=1) :: code = '8'
         integer :: evidence = 0       !< auto mode: the row that told the code
@@ -260,20 +260,20 @@ contains
     !> The variant shown by the first row that tells 8 from K, and that row
     !> (0 when no row does: the two variants read the tape alike).
     subroutine scan_code(data, code, evidence)
-        integer, intent(in) :: data(:)
+        character(len=*), intent(in) :: data
         character(len=1), intent(out) :: code
         integer, intent(out) :: evidence
         integer :: i, d
         code = '8'
         evidence = 0
-        do i = 1, size(data)
+        do i = 1, len(data)
             do d = 3, 9
                 if (d == 4 .or. d == 7 .or. d == 8) cycle
-                if (data(i) == DIGITS_8(d)) then
+                if (iachar(data(i:i)) == DIGITS_8(d)) then
                     code = '8'
                     evidence = i
                     return
-                else if (data(i) == DIGITS_K(d)) then
+                else if (iachar(data(i:i)) == DIGITS_K(d)) then
                     code = 'K'
                     evidence = i
                     return
@@ -282,13 +282,15 @@ contains
         end do
     end subroutine scan_code
 
+    !> The reader takes the tape image over (data is moved, not copied) and
+    !> gives it back with reader_done.
     subroutine reader_init(rd, data, code, evidence)
         type(reader_t), intent(out) :: rd
-        integer, intent(in) :: data(:)
+        character(len=:), allocatable, intent(inout) :: data
         character(len=1), intent(in) :: code
         integer, intent(in) :: evidence
         integer :: d
-        rd%data = data
+        call move_alloc(data, rd%data)
         rd%code = code
         rd%evidence = evidence
         do d = 0, 9
@@ -311,7 +313,7 @@ contains
     !> The row just past the data.
     integer function end_row(rd)
         type(reader_t), intent(in) :: rd
-        end_row = size(rd%data) + 1
+        end_row = len(rd%data) + 1
     end function end_row
 
     !> Next row with only the 5-track check; got = .false. at the end.
@@ -320,13 +322,13 @@ contains
         logical, intent(out) :: got
         integer, intent(out) :: n, value
         type(error_t), allocatable, intent(inout) :: err
-        got = rd%i < size(rd%data)
+        got = rd%i < len(rd%data)
         n = 0
         value = 0
         if (.not. got) return
         rd%i = rd%i + 1
         n = rd%i
-        value = rd%data(n)
+        value = iachar(rd%data(n:n))
         if (value > 31 .or. value < 0) then
             call new_error(err, 'byte 0x' // hex2(value) // &
                 ' has bits above the low 5 set (not a 5-track row)', AT_ROW, n)
@@ -360,7 +362,7 @@ contains
             if (rd%evidence > 0) then
                 call new_error(err, 'mixed code: digit ' // str(d) // ' punched as ' // &
                     octal(value, 2) // ' (octal), but row ' // str(rd%evidence) // ' has ' // &
-                    describe_row(rd%data(rd%evidence)) // ' of code ' // rd%code, AT_ROW, n)
+                    describe_row(iachar(rd%data(rd%evidence:rd%evidence))) // ' of code ' // rd%code, AT_ROW, n)
             else if (rd%code == 'K') then
                 call new_error(err, 'parity error: digit ' // str(d) // ' punched as ' // &
                     octal(value, 2) // ', controlled code expects ' // &
@@ -424,7 +426,7 @@ contains
         end if
         if (row%digit == 0) then
             nxt = -1
-            if (rd%i < size(rd%data)) nxt = rd%data(rd%i + 1)
+            if (rd%i < len(rd%data)) nxt = iachar(rd%data(rd%i + 1:rd%i + 1))
             if (nxt >= 0 .and. nxt <= 31) then
                 if (rd%digit_of(nxt) >= 0) then
                     call new_error(err, 'leading zero in ' // name, AT_ROW, row%n)
@@ -546,19 +548,49 @@ contains
     !> them apart, and a later row of the other variant is a "mixed code"
     !> error; a tape without such a row reads alike in both and is reported as
     !> "8" with tape%told false. On error, tape holds the frames read so far.
-    subroutine decode_tape(data, code, tape, err)
-        integer, intent(in) :: data(:)
+    subroutine decode_tape(rows, code, tape, err)
+        integer, intent(in) :: rows(:)
+        character(len=*), intent(in) :: code
+        type(tape_t), intent(out) :: tape
+        type(error_t), allocatable, intent(out) :: err
+        character(len=:), allocatable :: data
+        integer :: i, st
+        allocate(character(len=size(rows)) :: data, stat=st)
+        if (st /= 0) call no_memory('the tape', int(size(rows), int64))
+        do i = 1, size(rows)
+            data(i:i) = achar(iand(rows(i), 255))
+            ! a row that is not a byte keeps its fault: bits above the low 5
+            if (rows(i) < 0 .or. rows(i) > 255) data(i:i) = achar(255)
+        end do
+        call decode_bytes(data, code, tape, err)
+    end subroutine decode_tape
+
+    !> decode_tape of a tape image held as bytes (a byte a row), as read from
+    !> its file: the reader takes the bytes over for the decoding and gives
+    !> them back, so that a tape is held once, a byte a row.
+    subroutine decode_bytes(data, code, tape, err)
+        character(len=:), allocatable, intent(inout) :: data
         character(len=*), intent(in) :: code
         type(tape_t), intent(out) :: tape
         type(error_t), allocatable, intent(out) :: err
         type(reader_t) :: rd
+        call decode_reader(rd, data, code, tape, err)
+        if (allocated(rd%data)) call move_alloc(rd%data, data)
+    end subroutine decode_bytes
+
+    subroutine decode_reader(rd, data, code, tape, err)
+        type(reader_t), intent(inout) :: rd
+        character(len=:), allocatable, intent(inout) :: data
+        character(len=*), intent(in) :: code
+        type(tape_t), intent(out) :: tape
+        type(error_t), allocatable, intent(out) :: err
         type(row_t) :: row
         type(frame_t) :: f
         logical :: got
         integer :: n, value, evidence, opener_row
         character(len=1) :: c
 
-        tape%nrows = size(data)
+        tape%nrows = len(data)
         allocate(tape%frames(16))
         evidence = 0
         select case (code)
@@ -580,7 +612,7 @@ contains
             call raw(rd, got, n, value, err)
             if (allocated(err)) return
             if (.not. got) then
-                if (size(data) == 0) then
+                if (len(rd%data) == 0) then
                     call new_error(err, 'missing GM at the start of the tape (the tape is empty)', &
                                    AT_ROW, end_row(rd))
                 else
@@ -640,14 +672,17 @@ contains
                 return
             end if
         end do
-    end subroutine decode_tape
+    end subroutine decode_reader
 
     subroutine push(tape, f)
         type(tape_t), intent(inout) :: tape
         type(frame_t), intent(in) :: f
         type(frame_t), allocatable :: bigger(:)
+        integer :: st
         if (tape%nframes == size(tape%frames)) then
-            allocate(bigger(2 * size(tape%frames)))
+            allocate(bigger(2 * size(tape%frames)), stat=st)
+            if (st /= 0) call no_memory('the frames of the tape', &
+                int(2 * size(tape%frames), int64) * storage_size(f) / 8)
             bigger(1:tape%nframes) = tape%frames(1:tape%nframes)
             call move_alloc(bigger, tape%frames)
         end if
@@ -721,7 +756,7 @@ contains
         integer, allocatable, intent(out) :: rows(:)
         type(error_t), allocatable, intent(out) :: err
         integer, allocatable :: buf(:)
-        integer :: i, n, r
+        integer :: i, n, r, st
         character(len=:), allocatable :: message
         type(frame_t) :: f
         logical :: opener
@@ -758,7 +793,8 @@ contains
             call new_error(err, 'frame ' // str(size(frames)) // ': CYC needs a following frame')
             return
         end if
-        allocate(buf(2 * leader + 2 + 70 * size(frames)))
+        allocate(buf(2 * leader + 2 + 70 * size(frames)), stat=st)
+        if (st /= 0) call no_memory('the tape image', 4 * (2 * leader + 2 + 70 * int(size(frames), int64)))
         buf = ROW_BLANK
         n = leader + 1
         buf(n) = ROW_GM

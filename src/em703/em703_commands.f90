@@ -10,7 +10,7 @@ module em703_commands
     use base_files, only: same_file
     use base_sha256, only: sha256_hex
     use base_text, only: text_t, str, fixed, mm, ends_with
-    use em703_codec, only: tape_t, decode_tape, tape_text
+    use em703_codec, only: tape_t, decode_bytes, tape_text
     use em703_sim, only: run_t, simulate, field_check, shift_run
     use em703_jobsheet, only: job_t, layer_t, read_job, NLAYERS
     use em703_svg, only: svg_run, svg_job
@@ -36,16 +36,14 @@ contains
     !> Read and decode a tape; status 0, 1 (bad tape) or 2 (cannot read). With
     !> layer (a tape of a job sheet), the tape must have the size and SHA-256
     !> the job sheet records for it, when it records them.
-    subroutine load_tape(path, code, rows, tape, status, layer, job_path)
+    subroutine load_tape(path, code, tape, status, layer, job_path)
         character(len=*), intent(in) :: path, code
-        integer, allocatable, intent(out) :: rows(:)
         type(tape_t), intent(out) :: tape
         integer, intent(out) :: status
         type(layer_t), intent(in), optional :: layer
         character(len=*), intent(in), optional :: job_path
         type(error_t), allocatable :: err
         character(len=:), allocatable :: bytes
-        integer :: i
         status = EXIT_OK
         call read_text(path, bytes, err)
         if (allocated(err)) then
@@ -65,12 +63,7 @@ contains
                 return
             end if
         end if
-        allocate(rows(len(bytes)))
-        do i = 1, len(bytes)
-            rows(i) = iachar(bytes(i:i))
-        end do
-        deallocate(bytes)
-        call decode_tape(rows, code, tape, err)
+        call decode_bytes(bytes, code, tape, err)
         if (allocated(err)) then
             err%file = path
             call say(error_text(err))
@@ -133,7 +126,7 @@ contains
         type(tape_t) :: tape
         type(text_t) :: text
         character(len=:), allocatable :: head
-        call load_tape(path, code, rows, tape, status)
+        call load_tape(path, code, tape, status)
         if (status == EXIT_USAGE) return
         if (.not. bare) then
             head = '# code ' // tape%code
@@ -161,7 +154,7 @@ contains
         type(run_t) :: run
         type(text_t) :: text, svg
         type(error_t), allocatable :: err, field_err
-        call load_tape(path, code, rows, tape, status)
+        call load_tape(path, code, tape, status)
         if (status /= EXIT_OK) return
         call simulate(tape%frames(1:tape%nframes), run, err)
         if (allocated(err)) then
@@ -239,7 +232,7 @@ contains
         do l = 1, NLAYERS
             labels(l) = 'tape ' // job%layers(l)%key // ' ' // job%layers(l)%tape
             tools(l) = job%layers(l)%tool
-            call load_tape(job%layers(l)%path, job%code, rows, tape, status, job%layers(l), &
+            call load_tape(job%layers(l)%path, job%code, tape, status, job%layers(l), &
                            path)
             if (status /= EXIT_OK) return
             call simulate(tape%frames(1:tape%nframes), runs(l), err)
@@ -307,7 +300,7 @@ contains
             call gcode_program(runs, labels, tools, 'EM-703 job ' // job%name // ', code ' // &
                                job%code, chord_tol, use_z, text)
         else
-            call load_tape(path, 'auto', rows, tape, status)
+            call load_tape(path, 'auto', tape, status)
             if (status /= EXIT_OK) return
             call simulate(tape%frames(1:tape%nframes), runs(1), err)
             if (allocated(err)) then

@@ -19,7 +19,8 @@
 !> dropped (CR LF is one end of block); another character outside the code is
 !> an error naming its line and column.
 module em703_punch
-    use base_error, only: error_t, new_error, AT_LINE
+    use, intrinsic :: iso_fortran_env, only: int64
+    use base_error, only: error_t, new_error, AT_LINE, no_memory
     use base_text, only: octal
     implicit none
     private
@@ -103,8 +104,9 @@ contains
         integer, allocatable, intent(out) :: rows(:)
         type(error_t), allocatable, intent(out) :: err
         integer, allocatable :: buf(:)
-        integer :: i, n, c, r, line, col
-        allocate(buf(len(text) + 2 * LEADER))
+        integer :: i, n, c, r, line, col, st
+        allocate(buf(len(text) + 2 * LEADER), stat=st)
+        if (st /= 0) call no_memory('the tape image', 4 * (int(len(text), int64) + 2 * LEADER))
         buf = 0
         if (code /= 'iso' .and. code /= 'eia') then
             call new_error(err, 'code must be iso or eia, not "' // code // '"')

@@ -17,7 +17,7 @@
 module em703_sim
     use, intrinsic :: iso_fortran_env, only: int64, real64
     use em703_codec, only: frame_t
-    use base_error, only: error_t, new_error, AT_ROW
+    use base_error, only: error_t, new_error, AT_ROW, no_memory
     use base_text, only: str, fixed, mm
     implicit none
     private
@@ -131,7 +131,7 @@ contains
         type(run_t), intent(out) :: run
         type(error_t), allocatable, intent(out) :: err
         integer(int64) :: total
-        integer :: i, j, rep
+        integer :: i, j, rep, st
         integer(int64) :: px, py
         real(real64) :: line_len, arc_len, travel_len
 
@@ -158,7 +158,9 @@ contains
                 return
             end if
         end do
-        allocate(run%segs(max(1, int(total))))
+        allocate(run%segs(max(1, int(total))), stat=st)
+        if (st /= 0) call no_memory('the simulated run (' // str(total) // ' frames)', &
+            total * storage_size(run%segs(1)) / 8)
         px = 0
         py = 0
         line_len = 0

@@ -8,6 +8,7 @@
 !> the harness (seeds/seed004.py) as the oracle.
 module em703_split
     use, intrinsic :: iso_fortran_env, only: int64
+    use base_error, only: no_memory
     implicit none
     private
     public :: frames_needed, split_move
@@ -37,8 +38,10 @@ contains
         integer(int64), intent(in) :: dx, dy, max_pulses
         integer(int64), allocatable, intent(out) :: dxs(:), dys(:)
         integer(int64) :: n, k
+        integer :: st
         n = frames_needed(dx, dy, max_pulses)
-        allocate(dxs(n), dys(n))
+        allocate(dxs(n), dys(n), stat=st)
+        if (st /= 0) call no_memory('the split move', 16 * n)
         do k = 1, n
             dxs(k) = division_point(dx, k, n) - division_point(dx, k - 1, n)
             dys(k) = division_point(dy, k, n) - division_point(dy, k - 1, n)

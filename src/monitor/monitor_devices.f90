@@ -13,7 +13,8 @@
 !> The deck is read byte for byte, whatever kind of file it is (a regular
 !> file, a pipe, a FIFO, standard input), so every way in reads the same cards.
 module monitor_devices
-    use, intrinsic :: iso_fortran_env, only: error_unit, output_unit
+    use, intrinsic :: iso_fortran_env, only: error_unit, output_unit, int64
+    use base_error, only: no_memory
     use base_os, only: make_dirs, is_dir, read_fd
     use base_files, only: stage_file, commit_file, discard_file, lock_dir, unlock_dir, &
                           same_file
@@ -53,11 +54,15 @@ contains
         class(byte_buffer), intent(inout) :: self
         character(len=*), intent(in) :: s
         character(len=:), allocatable :: tmp
-        integer :: need
+        integer :: need, st
         need = self%n + len(s)
-        if (.not. allocated(self%data)) allocate(character(len=max(4096, need)) :: self%data)
+        if (.not. allocated(self%data)) then
+            allocate(character(len=max(4096, need)) :: self%data, stat=st)
+            if (st /= 0) call no_memory('the output', int(need, int64))
+        end if
         if (need > len(self%data)) then
-            allocate(character(len=max(2 * len(self%data), need)) :: tmp)
+            allocate(character(len=max(2 * len(self%data), need)) :: tmp, stat=st)
+            if (st /= 0) call no_memory('the output', 2 * int(len(self%data), int64))
             tmp(1:self%n) = self%data(1:self%n)
             call move_alloc(tmp, self%data)
         end if
