@@ -22,7 +22,10 @@ What is built (docs/SEED001-DXF.md says why):
   axis-parallel rectangle on a layer named ``PAD...`` is a rectangular pad.
   Bulges are cut into chords within 0.005 mm;
 * ARC -> ``A`` card (DXF arcs run counter-clockwise: direction ``-``);
-* INSERT -> its block's entities, exploded;
+* INSERT -> its block's entities, exploded (blocks within blocks too; a
+  block that inserts itself is reported, and a drawing that expands to more
+  than ``ENTITY_BUDGET`` entities is refused: a few kilobytes of nested
+  INSERTs can stand for millions of circles);
 * TEXT / MTEXT: ``FIRST``, ``LAST`` and whole numbers 1, 2, 3 ... attach to
   the nearest item (pads by their disc, the rest by their line) and fix the
   drawing order: FIRST, then the numbers in order, then the items without a
@@ -32,7 +35,11 @@ What is built (docs/SEED001-DXF.md says why):
   reported with its handle and layer and left out.
 
 The drawing is in mm; its origin becomes the start point unless ``origin``
-says which drawing point does; coordinates are rounded to 0.01 mm.
+says which drawing point does; coordinates are rounded to 0.01 mm.  An
+entity with a coordinate that is not a finite number, or that lies farther
+than ``FIELD_MM`` from the origin (no board on the EM-703's field can), is
+reported and left out.  Labels find their nearest item through a spatial
+index (shapely's STRtree), with the same answer as trying every item.
 """
 
 from __future__ import annotations
@@ -49,6 +56,7 @@ from pathlib import Path
 from typing import Any
 
 import ezdxf
+import shapely
 
 from harness import cards
 from harness.files import write_whole
@@ -57,6 +65,37 @@ from .contour import ArcEl, Seg, arc_chords, contour_cards, distance_to
 
 #: Chord tolerance (mm) for polyline bulges.
 BULGE_TOL = 0.005
+#: A coordinate, relative to the origin, or a size farther than this (mm)
+#: cannot be on the coordinatograph's 1200 x 1200 mm field.
+FIELD_MM = 1200.0
+#: The most entities a drawing may expand to, blocks exploded.
+ENTITY_BUDGET = 200_000
+
+
+class _LeftOut(ValueError):
+    """An entity that cannot be used: the reason, for its problem line."""
+
+
+class TooBig(ValueError):
+    """The drawing expands to more entities than ENTITY_BUDGET."""
+
+
+def _check_points(pts: Iterable[Sequence[float]], origin: Point) -> None:
+    for p in pts:
+        for v, o in zip((p[0], p[1]), origin):
+            v = float(v)
+            if not math.isfinite(v):
+                raise _LeftOut(f"a coordinate is {v}, not a number")
+            if abs(v - o) > FIELD_MM:
+                raise _LeftOut(f"coordinate {v:.6g} mm is off the {FIELD_MM:.0f} mm field "
+                               f"around the origin")
+
+
+def _check_size(v: float, what: str) -> float:
+    v = float(v)
+    if not math.isfinite(v) or abs(v) > FIELD_MM:
+        raise _LeftOut(f"{what} {v:.6g} mm is not a size on the {FIELD_MM:.0f} mm field")
+    return v
 #: The drawing's lower-left corner lands this far inside the field (mm)
 #: when no start point position is given.
 MARGIN_MM = 10
@@ -158,7 +197,12 @@ def _polyline_item(e: Any, verts: list[tuple[Point, float]], closed: bool,
     pts = [(x - origin[0], y - origin[1]) for (x, y), _ in verts]
     if layer.upper().startswith("PAD") and closed:
         xs, ys = sorted({round(p[0], 6) for p in pts}), sorted({round(p[1], 6) for p in pts})
-        if len(pts) == 5 and len(xs) == 2 and len(ys) == 2 and all(b == 0 for _, b in verts):
+        # four axis-parallel edges: each edge changes x or y, never both
+        # (a self-crossing "bow-tie" of the same four corners is no rectangle)
+        edges_ok = all((round(p[0], 6) == round(q[0], 6)) != (round(p[1], 6) == round(q[1], 6))
+                       for p, q in zip(pts, pts[1:]))
+        if len(pts) == 5 and len(xs) == 2 and len(ys) == 2 and edges_ok \
+                and all(b == 0 for _, b in verts):
             w, h = _u(xs[1]) - _u(xs[0]), _u(ys[1]) - _u(ys[0])
             cx2, cy2 = _u(xs[0]) + _u(xs[1]), _u(ys[0]) + _u(ys[1])
             if cx2 % 2 or cy2 % 2:
@@ -193,14 +237,45 @@ def _polyline_item(e: Any, verts: list[tuple[Point, float]], closed: bool,
     return Item("conductor", body, e.dxf.handle, layer, segments=segs)
 
 
-def _entity_items(e: Any, origin: Point, problems: list[str],
-                  labels: list[Label]) -> list[Item]:
-    """Items (or labels) of one entity; problems for what cannot be used."""
+@dataclass
+class _Budget:
+    """Entities left to expand (ENTITY_BUDGET at the start)."""
+
+    left: int = ENTITY_BUDGET
+
+    def take(self) -> None:
+        self.left -= 1
+        if self.left < 0:
+            raise TooBig(f"the drawing expands to more than {ENTITY_BUDGET} entities "
+                         f"(blocks inserted into blocks); split it, or explode fewer blocks")
+
+
+def _entity_items(e: Any, origin: Point, problems: list[str], labels: list[Label],
+                  budget: _Budget | None = None, blocks: tuple[str, ...] = ()) -> list[Item]:
+    """Items (or labels) of one entity; problems for what cannot be used.
+    An entity that cannot be read is one problem line, never a traceback."""
+    budget = budget or _Budget()
+    budget.take()
+    try:
+        return _entity_items_of(e, origin, problems, labels, budget, blocks)
+    except TooBig:
+        raise
+    except _LeftOut as exc:
+        problems.append(f"{_where(e)}: {exc}; left out")
+    except (ValueError, ArithmeticError, TypeError, AttributeError, KeyError,
+            IndexError, ezdxf.DXFError) as exc:
+        problems.append(f"{_where(e)}: cannot be read ({type(exc).__name__}: {exc}); left out")
+    return []
+
+
+def _entity_items_of(e: Any, origin: Point, problems: list[str], labels: list[Label],
+                     budget: _Budget, blocks: tuple[str, ...]) -> list[Item]:
     kind = e.dxftype()
     layer = e.dxf.layer
     if kind in ("TEXT", "MTEXT"):
         text = e.plain_text() if kind == "MTEXT" else e.dxf.text
         ins = e.dxf.insert
+        _check_points([ins], origin)
         labels.append(Label(" ".join(text.split()), e.dxf.handle, layer,
                             (float(ins[0]) - origin[0], float(ins[1]) - origin[1])))
         return []
@@ -209,7 +284,8 @@ def _entity_items(e: Any, origin: Point, problems: list[str],
         return []
     if kind == "CIRCLE":
         (c,) = _wcs(e, [e.dxf.center])
-        x, y, r = c[0] - origin[0], c[1] - origin[1], float(e.dxf.radius)
+        _check_points([c], origin)
+        x, y, r = c[0] - origin[0], c[1] - origin[1], _check_size(e.dxf.radius, "radius")
         if layer.upper().startswith("RING"):
             card = cards.o_card("-", _u(x), _u(y), _u(r))
             return [Item("circle", [card], e.dxf.handle, layer,
@@ -217,8 +293,11 @@ def _entity_items(e: Any, origin: Point, problems: list[str],
         return [Item("pad", [cards.d_card(_u(x), _u(y), _u(2 * r))], e.dxf.handle, layer,
                      disc=(x, y, r))]
     if kind == "ARC":
+        _check_size(e.dxf.radius, "radius")
         (c,) = _wcs(e, [e.dxf.center])
+        _check_points([c], origin)
         p0, p1 = ((float(v[0]), float(v[1])) for v in (e.start_point, e.end_point))  # WCS
+        _check_points([p0, p1], origin)
         cw = e.dxf.extrusion[2] < 0
         arc = ArcEl(c[0] - origin[0], c[1] - origin[1], p0[0] - origin[0], p0[1] - origin[1],
                     p1[0] - origin[0], p1[1] - origin[1], cw=cw)
@@ -230,6 +309,7 @@ def _entity_items(e: Any, origin: Point, problems: list[str],
         return [Item("arc", body, e.dxf.handle, layer, segments=[arc])]
     if kind == "LINE":
         p, q = e.dxf.start, e.dxf.end
+        _check_points([p, q], origin)
         verts = [((float(p[0]), float(p[1])), 0.0), ((float(q[0]), float(q[1])), 0.0)]
         item = _polyline_item(e, verts, False, 0.0, origin, problems)
         return [item] if item else []
@@ -243,7 +323,9 @@ def _entity_items(e: Any, origin: Point, problems: list[str],
                 problems.append(f"{_where(e)}: varying width; left out")
                 return []
             const = ws.pop()
+        _check_size(const, "width")
         pts = _wcs(e, [(x, y) for x, y, *_ in raw])
+        _check_points(pts, origin)
         verts = [(p, float(v[4])) for p, v in zip(pts, raw)]
         item = _polyline_item(e, verts, bool(e.closed), const, origin, problems)
         return [item] if item else []
@@ -258,20 +340,66 @@ def _entity_items(e: Any, origin: Point, problems: list[str],
         if len(widths) != 1:
             problems.append(f"{_where(e)}: varying width; left out")
             return []
-        sw = widths.pop()
+        sw = _check_size(widths.pop(), "width")
         pts = _wcs(e, [v.dxf.location for v in e.vertices])
+        _check_points(pts, origin)
         verts = [(p, float(v.dxf.bulge)) for p, v in zip(pts, e.vertices)]
         item = _polyline_item(e, verts, bool(e.is_closed), sw, origin, problems)
         return [item] if item else []
     if kind == "INSERT":
+        name = e.dxf.name
+        if name in blocks:
+            chain = " -> ".join(blocks + (name,))
+            raise _LeftOut(f"block {name} inserts itself ({chain})")
+        for v in (*e.dxf.insert, *(e.dxf.get(k, 1.0) for k in ("xscale", "yscale"))):
+            if not math.isfinite(float(v)):
+                raise _LeftOut(f"a coordinate or scale is {float(v)}, not a number")
         out: list[Item] = []
         for ve in e.virtual_entities():
             if ve.dxf.handle is None:
                 ve.dxf.handle = e.dxf.handle
-            out += _entity_items(ve, origin, problems, labels)
+            out += _entity_items(ve, origin, problems, labels, budget, blocks + (name,))
         return out
     problems.append(f"{_where(e)}: cannot map a {kind}; left out")
     return []
+
+
+class _Nearest:
+    """The nearest item to a point, by the paper's distance (Item.distance),
+    ties to the earlier item: the answer of trying every item, found through
+    an STRtree of the items' bounding boxes.  A box is never farther from a
+    point than its item, so the exact distance d of the item with the nearest
+    box bounds the answer, and only items whose box lies within d (plus a
+    rounding margin) need their exact distance."""
+
+    def __init__(self, items: list[Item]) -> None:
+        self.items = items
+        boxes = [_item_box(it) for it in items]
+        self.tree = shapely.STRtree([shapely.box(*b) for b in boxes]) if items else None
+
+    def __call__(self, at: Point) -> int:
+        p = shapely.Point(at)
+        first = int(self.tree.nearest(p))
+        bound = self.items[first].distance(at)
+        cands = self.tree.query(p, predicate="dwithin", distance=bound + 1e-6 * (1 + bound))
+        return min((self.items[i].distance(at), i) for i in set(map(int, cands)) | {first})[1]
+
+
+def _item_box(it: Item) -> tuple[float, float, float, float]:
+    """The bounding box of an item's geometry (an arc's: its full circle's)."""
+    if it.disc:
+        x, y, r = it.disc
+        return (x - r, y - r, x + r, y + r)
+    if it.rect:
+        return it.rect
+    boxes = []
+    for s in it.segments:
+        if isinstance(s, ArcEl):
+            boxes.append((s.cx - s.r, s.cy - s.r, s.cx + s.r, s.cy + s.r))
+        else:
+            boxes.append((min(s.x0, s.x1), min(s.y0, s.y1), max(s.x0, s.x1), max(s.y0, s.y1)))
+    return (min(b[0] for b in boxes), min(b[1] for b in boxes),
+            max(b[2] for b in boxes), max(b[3] for b in boxes))
 
 
 def _order(items: list[Item], labels: list[Label], problems: list[str]) -> tuple[list[Item], bool]:
@@ -280,6 +408,7 @@ def _order(items: list[Item], labels: list[Label], problems: list[str]) -> tuple
     first: list[int] = []
     last: list[int] = []
     numbered: dict[int, int] = {}
+    nearest = _Nearest(items)
     for lab in labels:
         words = lab.text.split()
         where = f"TEXT #{lab.handle} on layer {lab.layer}"
@@ -293,7 +422,7 @@ def _order(items: list[Item], labels: list[Label], problems: list[str]) -> tuple
             if not items:
                 problems.append(f"{where}: label {words[0]} has no item to attach to")
                 continue
-            near = min(range(len(items)), key=lambda i: (items[i].distance(lab.at), i))
+            near = nearest(lab.at)
             if key == "FIRST":
                 first.append(near)
             elif key == "LAST":
@@ -326,21 +455,11 @@ def convert(doc: Any, origin: Point = (0.0, 0.0)) -> Conversion:
     problems: list[str] = []
     labels: list[Label] = []
     items: list[Item] = []
+    budget = _Budget()
     for e in doc.modelspace():
-        items += _entity_items(e, origin, problems, labels)
+        items += _entity_items(e, origin, problems, labels, budget)
     ordered_items, ordered = _order(items, labels, problems)
-    boxes = []
-    for it in items:
-        if it.disc:
-            x, y, r = it.disc
-            boxes.append((x - r, y - r, x + r, y + r))
-        elif it.rect:
-            boxes.append(it.rect)
-        for s in it.segments:
-            if isinstance(s, ArcEl):
-                boxes.append((s.cx - s.r, s.cy - s.r, s.cx + s.r, s.cy + s.r))
-            else:
-                boxes.append((min(s.x0, s.x1), min(s.y0, s.y1), max(s.x0, s.x1), max(s.y0, s.y1)))
+    boxes = [_item_box(it) for it in items]
     bbox = (min(b[0] for b in boxes), min(b[1] for b in boxes),
             max(b[2] for b in boxes), max(b[3] for b in boxes)) if boxes else None
     return Conversion(ordered_items, problems, ordered, bbox)
@@ -393,7 +512,11 @@ def _run(args: argparse.Namespace) -> int:
     except ezdxf.DXFError as exc:
         print(f"dxf2deck: {args.drawing}: not a DXF drawing: {exc}", file=sys.stderr)
         return 2
-    conv = convert(doc, origin)
+    try:
+        conv = convert(doc, origin)
+    except TooBig as exc:
+        print(f"dxf2deck: {args.drawing}: {exc}", file=sys.stderr)
+        return 1
     for line in conv.problems:
         print(f"dxf2deck: {args.drawing}: {line}", file=sys.stderr)
     if not conv.items:

@@ -1,0 +1,175 @@
+"""dxf2deck on hostile and huge drawings: a coordinate far off the field or
+not a number, a block that inserts itself, nested INSERTs that stand for
+millions of circles, a self-crossing PAD outline, and labels matched through
+a spatial index with the same answer as trying every item. Each is a problem
+line naming the entity (or, for the runaway drawing, one refusal), never a
+traceback, and never a silently different deck."""
+from __future__ import annotations
+
+import math
+import random
+from pathlib import Path
+
+import ezdxf
+import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from seeds import seed001
+from seeds.__main__ import main
+from seeds.contour import ArcEl, Seg
+
+
+def _doc():
+    doc = ezdxf.new()
+    return doc, doc.modelspace()
+
+
+def _run(doc, tmp_path: Path, capsys) -> tuple[int, str, str]:
+    path = tmp_path / "board.dxf"
+    doc.saveas(path)
+    out = tmp_path / "board.crd"
+    status = main(["dxf2deck", str(path), "-o", str(out)])
+    err = capsys.readouterr().err
+    return status, err, out.read_text() if out.exists() else ""
+
+
+@pytest.mark.parametrize("centre, words", [
+    ((1e12, 5.0), "coordinate 1e+12 mm is off the 1200 mm field around the origin"),
+    ((-1300.0, 5.0), "coordinate -1300 mm is off the 1200 mm field around the origin"),
+    ((float("nan"), 5.0), "a coordinate is nan, not a number"),
+    ((5.0, float("inf")), "a coordinate is inf, not a number"),
+])
+def test_a_coordinate_off_the_field_or_not_a_number_is_left_out(tmp_path, capsys, centre, words):
+    doc, msp = _doc()
+    msp.add_circle((10, 10), 1.0)
+    bad = msp.add_circle(centre, 1.0)
+    status, err, deck = _run(doc, tmp_path, capsys)
+    assert status == 1
+    assert f"CIRCLE #{bad.dxf.handle} on layer 0: {words}; left out" in err
+    assert "Traceback" not in err
+    assert sum(1 for c in deck.splitlines() if c.startswith("D")) == 1
+
+
+@pytest.mark.parametrize("kind", ["radius", "width", "line", "text", "arc"])
+def test_every_kind_of_entity_is_checked(tmp_path, capsys, kind):
+    doc, msp = _doc()
+    msp.add_circle((10, 10), 1.0)
+    if kind == "radius":
+        e = msp.add_circle((10, 10), 1e9)
+    elif kind == "width":
+        e = msp.add_lwpolyline([(0, 0), (5, 0)], dxfattribs={"const_width": float("nan")})
+    elif kind == "line":
+        e = msp.add_line((0, 0), (5e6, 0))
+    elif kind == "text":
+        e = msp.add_text("1", dxfattribs={"insert": (float("nan"), 0)})
+    else:
+        e = msp.add_arc((0, 0), 5.0, float("nan"), 90)
+    status, err, deck = _run(doc, tmp_path, capsys)
+    assert f"#{e.dxf.handle} on layer 0: " in err and "left out" in err, err
+    assert "Traceback" not in err
+    assert status == 1
+    assert "D" in {c[:1] for c in deck.splitlines()}
+
+
+def test_a_block_that_inserts_itself_is_reported(tmp_path, capsys):
+    doc, msp = _doc()
+    a = doc.blocks.new("A")
+    a.add_circle((0, 0), 1.0)
+    b = doc.blocks.new("B")
+    b.add_blockref("A", (5, 0))
+    a.add_blockref("B", (5, 0))               # A -> B -> A
+    msp.add_blockref("A", (10, 10))
+    status, err, deck = _run(doc, tmp_path, capsys)
+    assert status == 1
+    assert "block A inserts itself (A -> B -> A); left out" in err
+    # what the blocks draw before the cycle is kept: A's circle
+    assert sum(1 for c in deck.splitlines() if c.startswith("D")) == 1
+
+
+def test_nested_inserts_past_the_budget_are_refused(tmp_path, capsys, monkeypatch):
+    """2^24 circles in a few kilobytes; the budget stops the expansion."""
+    monkeypatch.setattr(seed001, "ENTITY_BUDGET", 5000)
+    doc, msp = _doc()
+    doc.blocks.new("B0").add_circle((0, 0), 0.5)
+    for k in range(1, 25):
+        blk = doc.blocks.new(f"B{k}")
+        blk.add_blockref(f"B{k - 1}", (0, 0))
+        blk.add_blockref(f"B{k - 1}", (0.01 * k, 0))
+    msp.add_blockref("B24", (10, 10))
+    status, err, deck = _run(doc, tmp_path, capsys)
+    assert status == 1
+    assert err.strip().endswith("the drawing expands to more than 5000 entities (blocks "
+                                "inserted into blocks); split it, or explode fewer blocks")
+    assert deck == ""                          # nothing written
+
+
+def test_the_budget_is_large_enough_for_real_boards():
+    assert seed001.ENTITY_BUDGET >= 200_000
+
+
+@pytest.mark.parametrize("corners", [
+    [(0, 0), (4, 2), (4, 0), (0, 2)],          # a bow-tie: the same corners, crossed
+    [(0, 0), (4, 2), (0, 2), (4, 0)],
+])
+def test_a_self_crossing_pad_outline_is_not_a_rectangle(tmp_path, capsys, corners):
+    doc, msp = _doc()
+    e = msp.add_lwpolyline(corners, close=True, dxfattribs={"layer": "PADS"})
+    status, err, deck = _run(doc, tmp_path, capsys)
+    assert (f"LWPOLYLINE #{e.dxf.handle} on layer PADS: a closed polyline on a PAD layer "
+            "that is not an axis-parallel rectangle; drawn as a conductor") in err
+    assert not any(c.startswith("D") for c in deck.splitlines())
+    assert any(c.startswith("L") for c in deck.splitlines())
+
+
+def test_a_true_rectangle_is_still_a_pad(tmp_path, capsys):
+    doc, msp = _doc()
+    msp.add_lwpolyline([(0, 0), (4, 0), (4, 2), (0, 2)], close=True, dxfattribs={"layer": "PADS"})
+    status, err, deck = _run(doc, tmp_path, capsys)
+    assert status == 0, err
+    assert [c[:1] for c in deck.splitlines() if c[:1] in "DL"] == ["D"]
+
+
+# ---- the spatial index gives the answer of trying every item ---------------
+
+def _item(kind: str, a: float, b: float, c: float, d: float) -> seed001.Item:
+    if kind == "disc":
+        return seed001.Item("pad", [], "0", "0", disc=(a, b, 0.1 + abs(c) % 3))
+    if kind == "rect":
+        return seed001.Item("pad", [], "0", "0", rect=(min(a, c), min(b, d), max(a, c), max(b, d)))
+    if kind == "line":
+        if (a, b) == (c, d):                   # dxf2deck drops zero-length segments
+            d += 1
+        return seed001.Item("conductor", [], "0", "0", segments=[Seg(a, b, c, d)])
+    r = 0.5 + abs(c) % 5
+    return seed001.Item("arc", [], "0", "0",
+                        segments=[ArcEl(a, b, a + r, b, a, b + r, cw=d > 0)])
+
+
+coord = st.integers(-50, 50).map(float)        # whole mm: ties are common
+items_st = st.lists(st.tuples(st.sampled_from(["disc", "rect", "line", "arc"]),
+                              coord, coord, coord, coord), min_size=1, max_size=40)
+
+
+@settings(max_examples=200, deadline=None)
+@given(items=items_st, points=st.lists(st.tuples(coord, coord), min_size=1, max_size=20))
+def test_the_nearest_item_is_the_one_trying_every_item_finds(items, points):
+    its = [_item(*t) for t in items]
+    nearest = seed001._Nearest(its)
+    for p in points:
+        want = min(range(len(its)), key=lambda i: (its[i].distance(p), i))
+        assert nearest(p) == want
+
+
+def test_many_labels_many_items_match_as_by_brute_force():
+    rnd = random.Random(7)
+    its = [_item(rnd.choice(["disc", "rect", "line", "arc"]),
+                 *(rnd.uniform(0, 1000) for _ in range(2)),
+                 *(rnd.uniform(0, 1000) if k == "rect" else rnd.uniform(-3, 3) for k in "xx"))
+           for _ in range(5000)]
+    nearest = seed001._Nearest(its)
+    for _ in range(300):
+        p = (rnd.uniform(-10, 1010), rnd.uniform(-10, 1010))
+        want = min(range(len(its)), key=lambda i: (its[i].distance(p), i))
+        assert nearest(p) == want
+    assert math.isfinite(its[0].distance((0.0, 0.0)))
