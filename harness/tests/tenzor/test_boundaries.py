@@ -85,6 +85,26 @@ def test_round_pad_circles_step_by_at_most_t_minus_ovl_and_are_fewest(run_tenzor
         assert 2 * r1 - tool > 2 * smax * (n - 2), (rings, smax)
 
 
+@pytest.mark.parametrize("tool", [4, 39, 40, 41, 43, 44, 48, 50, 100, 400])
+@pytest.mark.parametrize("span", [0, 1])
+def test_round_pad_overlap_is_a_quarter_of_the_tool_within_its_limits(run_tenzor, tool, span):
+    """Where the last circle is exactly T - OVL (span 0) or one unit more
+    (span 1) inside the first, for tools on both sides of OVL's limits (0.01
+    mm below 0.08 mm tools, T/4 between, 0.10 mm from 0.40 mm on): one step
+    suffices exactly when the span is at most T - OVL."""
+    smax = max(1, tool - _ovl(tool))
+    r1 = tool // 2 + smax + span
+    d = tool + 2 * r1
+    frames = _tape(run_tenzor, [cards.p_card(1000, 1000, w1=tool, dmax=d, order="D"),
+                                cards.d_card(5000, 5000, d)], "small")
+    rings = _rings(frames)
+    assert rings[0] == r1
+    steps = [a - b for a, b in zip(rings, rings[1:])]
+    assert all(0 < s <= smax for s in steps), (rings, smax)
+    assert 2 * rings[-1] <= tool
+    assert len(steps) == (1 if span == 0 else 2), (rings, smax)
+
+
 # ---------------------------------------------------------------------------
 # Conductors: one pass or loops.
 # ---------------------------------------------------------------------------
