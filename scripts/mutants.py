@@ -133,7 +133,14 @@ def killed(m: Mutant) -> tuple[bool, str]:
         path.write_text(text)
 
 
-def main() -> int:
+def main(argv: list[str]) -> int:
+    """`scripts/mutants.py [N ...]`: every mutant, or only those numbered N
+    (1-based, as the table numbers them), e.g. to re-run the survivors."""
+    try:
+        chosen = {int(a) for a in argv} or set(range(1, len(MUTANTS) + 1))
+    except ValueError:
+        print("usage: scripts/mutants.py [N ...]  (mutant numbers, 1-based)", file=sys.stderr)
+        return 2
     dirty = subprocess.run(["git", "status", "--porcelain", "legacy", "src"], cwd=ROOT,
                            capture_output=True, text=True).stdout
     if dirty.strip():
@@ -144,6 +151,8 @@ def main() -> int:
     start = time.monotonic()
     try:
         for n, m in enumerate(MUTANTS, 1):
+            if n not in chosen:
+                continue
             t = time.monotonic()
             dead, by = killed(m)
             if not m.equivalent:
@@ -167,4 +176,4 @@ def main() -> int:
 
 
 if __name__ == "__main__":
-    sys.exit(main())
+    sys.exit(main(sys.argv[1:]))
