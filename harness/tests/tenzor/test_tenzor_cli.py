@@ -190,6 +190,42 @@ def test_concurrent_runs_into_one_directory_never_mix(tenzor_exe, tmp_path):
         assert _package_agrees_with_its_job_sheet(out, "SAME")
 
 
+@pytest.mark.parametrize("delay", [0.02, 0.05, 0.1, 0.2, 0.4])
+def test_a_run_killed_mid_job_leaves_whole_packages(tenzor_exe, tmp_path, delay):
+    """SIGKILL at some moment of a job of many packages over an earlier run's
+    output: every job sheet in the directory belongs with the files beside it
+    (the job sheet is committed last, so a package whose tapes were renamed
+    but not its sheet still has the earlier run's sheet, which then must not
+    agree, or none). Only whole packages are taken as punched."""
+    import signal
+    import time
+    pads = "".join(f"D         {10 + i:6d}.00     10.00    1.00\n" for i in range(60))
+    deck = tmp_path / "many.crd"
+    deck.write_text("".join(f"PKG{k}\n{pads}C\n" for k in range(80)).rstrip("C\n") + "\nE\n")
+    out = tmp_path / "out"
+    first = subprocess.run([str(tenzor_exe), str(deck), "-o", str(out)], capture_output=True,
+                           timeout=300)
+    assert first.returncode == 0, first.stderr.decode()
+    deck.write_text(deck.read_text().replace("    1.00\n", "    1.20\n"))
+    proc = subprocess.Popen([str(tenzor_exe), str(deck), "-o", str(out)],
+                            stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    time.sleep(delay)
+    proc.send_signal(signal.SIGKILL)
+    proc.wait(timeout=60)
+    new = old = 0
+    for k in range(80):
+        if _package_agrees_with_its_job_sheet(out, f"PKG{k}"):
+            # whole: the earlier run's or the new one's, never a mixture
+            small = (out / f"PKG{k}-small.txt").read_text()
+            new += "1.20" in (out / f"PKG{k}.lst").read_text()
+            old += "1.20" not in (out / f"PKG{k}.lst").read_text()
+            assert small
+        else:
+            # caught between its tapes and its sheet: the sheet must say so
+            assert (out / f"PKG{k}.job").exists()
+    assert new + old >= 79
+
+
 @pytest.mark.parametrize("program", ["tenzor", "em703"])
 def test_version_is_fpm_tomls(tenzor_exe, em703_exe, program):
     import tomllib
