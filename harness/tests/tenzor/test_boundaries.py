@@ -176,3 +176,24 @@ def test_a_move_of_exactly_k_fmax_is_k_frames(run_tenzor, length, frames):
     assert sum(f.dx for f in drawn) == length
     assert max(f.dx for f in drawn) - min(f.dx for f in drawn) <= 1
     assert math.ceil(length / fmax) == frames
+
+
+# ---------------------------------------------------------------------------
+# The reach of a row of pads: its last pad at most 120000 mm out.
+# ---------------------------------------------------------------------------
+@pytest.mark.parametrize("axis", ["x", "y"])
+@pytest.mark.parametrize("past", [0, 1])
+def test_the_last_pad_of_a_row_may_reach_exactly_120000_mm(run_tenzor, axis, past):
+    """A row whose last pad lies exactly 120000 mm from the start point is
+    within TENZOR's reach (it is still off the field: another error); one
+    hundredth further is refused at the step's column."""
+    step = 12_000_000 + past
+    sx, sy = (step, 0) if axis == "x" else (0, step)
+    deck = cards.deck([cards.CardPackage("REACH", [cards.d_card(0, 0, 100, n=2, sx=sx, sy=sy)])],
+                      envelope=False)
+    proc, _ = run_tenzor(deck)
+    err = proc.stderr.decode()
+    assert proc.returncode == 1
+    col = 51 if axis == "x" else 61
+    said = f"CARD 2 COL {col}: THE LAST PAD OF THE ROW IS MORE THAN 120000.00 MM" in err
+    assert said == bool(past), err
