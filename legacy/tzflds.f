@@ -13,20 +13,22 @@ C     ND      (OUTPUT) INTEGER(9)   ITS IMPLIED DECIMALS (0 = INTEGER)
 C     NL      (OUTPUT) INTEGER      NUMBER OF LETTER COLUMNS, 0 TO 2
 C     LC      (OUTPUT) INTEGER(2)   THE LETTER COLUMNS (DIRECTION,
 C                                   TAPE, CODE, ORDER)
-C     LAST    (OUTPUT) INTEGER      THE NAME CARD READS COLS 1-LAST
-C                                   (18); 0 FOR THE OTHER TYPES
+C     MASK    (OUTPUT) CHARACTER*72 'R' IN EACH COLUMN OF 1-72 THE
+C                                   TYPE READS (THE NAME CARD: 1-18),
+C                                   BLANK IN THE OTHERS
 C     CHANGES: SEE THE HISTORY OF THE REPOSITORY (GIT LOG)
 C=======================================================================
-      SUBROUTINE TZFLDS(CH, NF, IA, IB, ND, NL, LC, LAST)
+      SUBROUTINE TZFLDS(CH, NF, IA, IB, ND, NL, LC, MASK)
       IMPLICIT NONE
       CHARACTER*1 CH
-      INTEGER NF, IA(9), IB(9), ND(9), NL, LC(2), LAST
+      INTEGER NF, IA(9), IB(9), ND(9), NL, LC(2)
+      CHARACTER*72 MASK
 C     ---- LOCAL -------------------------------------------------------
 C     THE NUMBER FIELDS OF P (1-9), D (10-16), L (17-19), + (20-21),
 C     O (22-24), A (25-30) AND M (31-36), IN CARD ORDER
       INTEGER MXF
       PARAMETER (MXF = 36)
-      INTEGER JA(MXF), JB(MXF), JD(MXF), JFST(7), JLST(7), I, K
+      INTEGER JA(MXF), JB(MXF), JD(MXF), JFST(7), JLST(7), I, J, K
       CHARACTER*7 TYPES
       DATA TYPES / 'PDL+OAM' /
       DATA JFST / 1, 10, 17, 20, 22, 25, 31 /
@@ -49,8 +51,8 @@ C     O (22-24), A (25-30) AND M (31-36), IN CARD ORDER
 C
       NF = 0
       NL = 0
-      LAST = 0
-      IF (CH .EQ. 'N') LAST = 18
+      MASK = 'R'
+      IF (CH .EQ. 'N') MASK(1:18) = 'RRRRRRRRRRRRRRRRRR'
       K = INDEX(TYPES, CH)
       IF (K .EQ. 0) RETURN
       DO 10 I = JFST(K), JLST(K)
@@ -58,6 +60,9 @@ C
          IA(NF) = JA(I)
          IB(NF) = JB(I)
          ND(NF) = JD(I)
+         DO 5 J = JA(I), JB(I)
+            MASK(J:J) = 'R'
+    5    CONTINUE
    10 CONTINUE
       IF (CH .EQ. 'O' .OR. CH .EQ. 'A' .OR. CH .EQ. 'M') THEN
          NL = 1
@@ -67,6 +72,9 @@ C
          LC(1) = 70
          LC(2) = 71
       END IF
+      DO 20 I = 1, NL
+         MASK(LC(I):LC(I)) = 'R'
+   20 CONTINUE
       RETURN
 C     END OF TZFLDS
       END

@@ -21,25 +21,16 @@ C=======================================================================
       CHARACTER*80 CARD
       INTEGER LDATA
 C     ---- LOCAL -------------------------------------------------------
-      INTEGER NF, IA(9), IB(9), ND(9), NL, LC(2), LAST, I, J, NUSED,
-     1        IVAL, LB, IERR, IECOL
+      INTEGER NF, IA(9), IB(9), ND(9), NL, LC(2), I, J, NUSED, IVAL,
+     1        LB, IERR, IECOL
       CHARACTER*1 CH, CL
       CHARACTER*72 MASK
 C
       LDATA = 0
       CH = CARD(1:1)
       IF (INDEX('PDL+OAM', CH) .EQ. 0) RETURN
-      CALL TZFLDS(CH, NF, IA, IB, ND, NL, LC, LAST)
-C     ---- THE COLUMNS THE TYPE READS ----------------------------------
-      MASK = 'R'
-      DO 20 I = 1, NF
-         DO 10 J = IA(I), IB(I)
-            MASK(J:J) = 'R'
-   10    CONTINUE
-   20 CONTINUE
-      DO 30 I = 1, NL
-         MASK(LC(I):LC(I)) = 'R'
-   30 CONTINUE
+      CALL TZFLDS(CH, NF, IA, IB, ND, NL, LC, MASK)
+C     ---- NOTHING IN THE COLUMNS THE TYPE DOES NOT READ ---------------
       DO 40 J = 2, 72
          IF (MASK(J:J) .EQ. ' ' .AND. CARD(J:J) .NE. ' ') RETURN
    40 CONTINUE

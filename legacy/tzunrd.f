@@ -17,24 +17,13 @@ C=======================================================================
       CHARACTER*80 CARD
       CHARACTER*1 CH
 C     ---- LOCAL -------------------------------------------------------
-      INTEGER NF, IA(9), IB(9), ND(9), NL, LC(2), LAST, I, J, K1, K2,
-     1        LR, LT
+      INTEGER NF, IA(9), IB(9), ND(9), NL, LC(2), J, K1, K2, LR, LT
       CHARACTER*72 MASK
       CHARACTER*60 READS, WHO
       CHARACTER*12 S1, S2
       INTEGER L1, L2
 C
-      CALL TZFLDS(CH, NF, IA, IB, ND, NL, LC, LAST)
-      MASK = 'R'
-      DO 20 I = 1, NF
-         DO 10 J = IA(I), IB(I)
-            MASK(J:J) = 'R'
-   10    CONTINUE
-   20 CONTINUE
-      DO 30 I = 1, NL
-         MASK(LC(I):LC(I)) = 'R'
-   30 CONTINUE
-      IF (LAST .GT. 0) MASK(1:LAST) = 'RRRRRRRRRRRRRRRRRR'
+      CALL TZFLDS(CH, NF, IA, IB, ND, NL, LC, MASK)
 C     ---- WHAT IT READS, IN WORDS: 'COLS 1, 11-38' --------------------
       READS = 'COLS'
       LR = 4
