@@ -10,8 +10,8 @@ program test_em703_tools
     use base_text, only: text_t, str, fixed, mm, octal, parse_mm, parse_real
     use em703_codec, only: frame_t, tape_t, decode_tape, encode_tape, frame_text, tape_text, &
                            on_circle
-    use em703_sim, only: run_t, simulate, field_check, SEG_ARC, SEG_LINE, SEG_DOT, SEG_TRAVEL, &
-                         SEG_RAISE, PI
+    use em703_sim, only: run_t, seg_t, simulate, field_check, run_segments, seg_box, SEG_ARC, &
+                         SEG_LINE, SEG_DOT, SEG_TRAVEL, SEG_RAISE, PI
     use em703_svg, only: svg_run
     use em703_gcode, only: gcode_program, chord_count, ROUNDING
     use em703_gerber, only: gerber_image
@@ -32,6 +32,7 @@ program test_em703_tools
     call test_sim_saw_cycle()
     call test_sim_arcs_and_circles()
     call test_sim_dots_and_field()
+    call test_sim_cycles_are_not_unrolled()
     call test_svg()
     call test_gcode()
     call test_gcode_chords()
@@ -215,17 +216,22 @@ contains
         type(frame_t) :: frames(3)
         type(run_t) :: run
         type(error_t), allocatable :: err
+        type(seg_t), allocatable :: segs(:)
+        integer :: n
         real(real64) :: tooth
         frames(1) = fr(0, 0, 300, 400, 8, 10)
         frames(2) = fr(0, 0, 100, -400, 0, 10)
         frames(3) = fr(0, 0, -3200, 0, 0, 20)
         call simulate(frames, run, err)
         call check(.not. allocated(err), 'saw runs')
-        call check_int(run%executed, 17, 'CYC8 runs the pair 8 times, then the return')
-        call check_int(run%nseg, 17, 'one segment per executed frame')
-        call check(run%segs(15)%kind == SEG_LINE .and. run%segs(15)%x0 == 2800 .and. &
-                   run%segs(16)%x1 == 3200 .and. run%segs(16)%y1 == 0, 'the eighth tooth')
-        call check(run%segs(17)%kind == SEG_TRAVEL, 'the return is travel')
+        call check_int(int(run%executed), 17, 'CYC8 runs the pair 8 times, then the return')
+        call run_segments(run, segs, n)
+        call check_int(n, 17, 'one segment per executed frame')
+        call check(segs(15)%kind == SEG_LINE .and. segs(15)%x0 == 2800 .and. &
+                   segs(16)%x1 == 3200 .and. segs(16)%y1 == 0, 'the eighth tooth')
+        call check(segs(15)%frame == 1 .and. segs(16)%frame == 2 .and. segs(17)%frame == 3, &
+                   'each segment names its frame')
+        call check(segs(17)%kind == SEG_TRAVEL, 'the return is travel')
         call check(run%end_x == 0 .and. run%end_y == 0 .and. .not. run%down, 'ends raised at the start')
         tooth = 5.0_real64 + hypot(1.0_real64, 4.0_real64)
         call check(abs(run%drawn_mm - 8 * tooth) < 1e-9_real64, 'saw drawn length')
@@ -238,12 +244,15 @@ contains
         type(frame_t) :: f(1), g(2)
         type(run_t) :: run
         type(error_t), allocatable :: err
+        type(seg_t), allocatable :: segs(:)
+        integer :: n
         ! Example 3: X2000 DX-2000 DY-2000 K13, clockwise quarter about (-20, 0) mm.
         f(1) = fr(2000, 0, -2000, -2000, 0, 13)
         call simulate(f, run, err)
-        call check(run%segs(1)%kind == SEG_ARC .and. run%segs(1)%cx == -2000 .and. &
-                   run%segs(1)%cy == 0, 'Example 3 centre')
-        call check(abs(run%segs(1)%sweep + PI / 2) < 1e-12_real64, 'Example 3 sweeps -90 degrees')
+        call run_segments(run, segs, n)
+        call check(segs(1)%kind == SEG_ARC .and. segs(1)%cx == -2000 .and. &
+                   segs(1)%cy == 0, 'Example 3 centre')
+        call check(abs(segs(1)%sweep + PI / 2) < 1e-12_real64, 'Example 3 sweeps -90 degrees')
         call check(abs(run%drawn_mm - 10 * PI) < 1e-9_real64, 'Example 3 length')
         call check(abs(run%minutes - 10 * PI / 1500) < 1e-12_real64, 'arcs at 1.5 m/min')
         call check(run%xmin == -20 .and. run%xmax == 0 .and. run%ymin == -20 .and. run%ymax == 0, &
@@ -252,15 +261,17 @@ contains
         ! The other way round (K11) is three quarters.
         f(1)%k = 11
         call simulate(f, run, err)
-        call check(abs(run%segs(1)%sweep - 3 * PI / 2) < 1e-12_real64, 'K11 is the long way')
+        call run_segments(run, segs, n)
+        call check(abs(segs(1)%sweep - 3 * PI / 2) < 1e-12_real64, 'K11 is the long way')
         call check(abs(run%ymin + 20) < 1e-9_real64 .and. abs(run%xmin + 40) < 1e-9_real64 .and. &
                    abs(run%ymax - 20) < 1e-9_real64, 'K11 box passes the extremes')
         ! Example 2: Y10000 K13, full circle below the tool, then raise.
         g(1) = fr(0, 10000, 0, 0, 0, 13)
         g(2) = fr(0, 0, 0, 0, 0, 20)
         call simulate(g, run, err)
-        call check(abs(run%segs(1)%sweep + 2 * PI) < 1e-12_real64, 'Example 2 full turn clockwise')
-        call check(run%segs(2)%kind == SEG_RAISE .and. .not. run%down, 'K20 alone raises')
+        call run_segments(run, segs, n)
+        call check(abs(segs(1)%sweep + 2 * PI) < 1e-12_real64, 'Example 2 full turn clockwise')
+        call check(segs(2)%kind == SEG_RAISE .and. .not. run%down, 'K20 alone raises')
         call check(run%xmin == -100 .and. run%xmax == 100 .and. run%ymin == -200 .and. run%ymax == 0, &
                    'Example 2 box')
         call check(abs(run%drawn_mm - 200 * PI) < 1e-9_real64, 'Example 2 length')
@@ -270,6 +281,8 @@ contains
         type(frame_t) :: f(4)
         type(run_t) :: run
         type(error_t), allocatable :: err
+        type(seg_t), allocatable :: segs(:)
+        integer :: n
         f(1) = fr(0, 0, 1000, 0, 0, 20)
         f(2) = fr(0, 0, 0, 0, 0, 10)
         f(3) = fr(0, 0, 0, 0, 0, 20)
@@ -279,19 +292,70 @@ contains
         f(3)%row = 35
         f(4)%row = 39
         call simulate(f, run, err)
-        call check(run%segs(2)%kind == SEG_DOT .and. run%segs(2)%x0 == 1000, 'K10 alone is a dot')
+        call run_segments(run, segs, n)
+        call check(segs(2)%kind == SEG_DOT .and. segs(2)%x0 == 1000, 'K10 alone is a dot')
         call check(abs(run%drawn_mm) < 1e-12_real64 .and. abs(run%travel_mm - 20) < 1e-9_real64, &
                    'a dot draws no length')
-        call field_check(run, f, 0_int64, 0_int64, 1, 1, err)
+        call field_check(run, 0_int64, 0_int64, 1, 1, err)
         call check(.not. allocated(err), 'on the field from (0, 0)')
-        call field_check(run, f, 119500_int64, 0_int64, 1, 1, err)
+        call field_check(run, 119500_int64, 0_int64, 1, 1, err)
         call check(allocated(err), 'leaves the field 5 mm from its edge')
         if (allocated(err)) call check_int(err%number, 22, 'the row of the frame that leaves')
-        call field_check(run, f, 119500_int64, 0_int64, 1, 2, err)
+        call field_check(run, 119500_int64, 0_int64, 1, 2, err)
         call check(.not. allocated(err), 'fits at 1:2')
-        call field_check(run, f, 110000_int64, 0_int64, 100, 1, err)
+        call field_check(run, 110000_int64, 0_int64, 100, 1, err)
         call check(allocated(err), 'does not fit at 100:1')
     end subroutine test_sim_dots_and_field
+
+    !> A cycle pair is counted, not unrolled: a saw of 999 999 999 teeth runs
+    !> at once, and the first pass of a cycle that leaves the field is the
+    !> one a frame-by-frame walk finds.
+    subroutine test_sim_cycles_are_not_unrolled()
+        type(frame_t) :: f(3)
+        type(run_t) :: run
+        type(error_t), allocatable :: err
+        type(seg_t), allocatable :: segs(:)
+        real(real64) :: box(4)
+        integer :: n, i, first
+        f(1) = fr(0, 0, 300, 400, 999999999, 10)
+        f(2) = fr(0, 0, 100, -400, 0, 10)
+        f(3) = fr(0, 0, 0, 0, 0, 20)
+        f(3)%dx = -400 * 999999999_int64
+        f(1)%row = 22
+        f(2)%row = 30
+        f(3)%row = 38
+        call simulate(f, run, err)
+        call check(.not. allocated(err), 'a saw of 999999999 teeth runs')
+        call check(run%executed == 2 * 999999999_int64 + 1, 'every pass counted')
+        call check(run%end_x == 0 .and. run%end_y == 0, 'and it comes home')
+        call check(abs(run%xmax - 3999999996.0_real64) < 1e-3_real64, 'its box reaches the last tooth')
+        call check(abs(run%drawn_mm / 999999999 - (5 + hypot(1.0_real64, 4.0_real64))) < 1e-9_real64, &
+                   'drawn length is the teeth')
+        ! 500 teeth: the tool passes x = 1200 mm in the 301st tooth's first line
+        f(1)%cyc = 500
+        f(3)%dx = -400 * 500
+        call simulate(f, run, err)
+        call field_check(run, 0_int64, 0_int64, 1, 1, err)
+        call check(allocated(err), 'a 2000 mm saw leaves the field')
+        if (allocated(err)) then
+            call check_int(err%number, 22, 'at the row of the cycle''s first frame')
+            call check(index(err%message, 'frame 1 ') == 1 .and. &
+                       index(err%message, 'x = 1203.00 mm') > 0, 'in its 301st pass: ' // err%message)
+        end if
+        ! the same pass found by walking every segment
+        call run_segments(run, segs, n)
+        first = 0
+        do i = 1, n
+            call seg_box(segs(i), box)
+            if (box(2) > 120000 + 1e-6_real64) then
+                first = i
+                exit
+            end if
+        end do
+        call check_int(first, 601, 'the walk finds the 301st pass''s first line')
+        call field_check(run, 0_int64, 0_int64, 1, 2, err)
+        call check(.not. allocated(err), 'the saw fits at 1:2')
+    end subroutine test_sim_cycles_are_not_unrolled
 
     subroutine test_svg()
         type(frame_t) :: f(3)

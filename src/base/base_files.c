@@ -114,6 +114,52 @@ int em_stage(const char *path, const char *data, size_t n, char *tmp, size_t cap
     return rc;
 }
 
+/*
+ * Streamed output: the same promise as em_stage, for a file written a piece
+ * at a time (em703's listings and drawings of big tapes, which are never
+ * held whole in memory). em_open_out creates the temporary file (or opens a
+ * device or FIFO target straight), em_write appends, em_close_out checks the
+ * count, fsyncs and closes; em_commit then renames it into place, and
+ * em_discard removes it after a failure.
+ */
+int em_open_out(const char *path, int *fd, char *tmp, size_t cap)
+{
+    struct stat st;
+    signal(SIGXFSZ, SIG_IGN);
+    *fd = -1;
+    if (cap > 0) tmp[0] = '\0';
+    if (stat(path, &st) == 0 && !S_ISREG(st.st_mode)) {
+        if (S_ISDIR(st.st_mode)) return EISDIR;
+        *fd = open(path, O_WRONLY | O_CLOEXEC);
+        return *fd < 0 ? errno : 0;
+    }
+    *fd = create_temp(path, tmp, cap);
+    return *fd < 0 ? errno : 0;
+}
+
+/* Append n bytes to fd: 0 or the errno value. Standard output is fd 1. */
+int em_write(int fd, const char *data, size_t n)
+{
+    signal(SIGXFSZ, SIG_IGN);
+    return write_all(fd, data, n);
+}
+
+/* End a streamed file of `total` bytes: for a staged file (tmp not empty)
+ * fsync it and count its bytes on disk again; then close. On failure the
+ * temporary file is removed. */
+int em_close_out(int fd, const char *tmp, long long total)
+{
+    struct stat st;
+    int rc = 0;
+    if (tmp[0] != '\0') {
+        if (fsync(fd) != 0) rc = errno;
+        if (rc == 0 && (fstat(fd, &st) != 0 || (long long)st.st_size != total)) rc = EIO;
+    }
+    if (close(fd) != 0 && rc == 0) rc = errno;
+    if (rc != 0 && tmp[0] != '\0') unlink(tmp);
+    return rc;
+}
+
 /* Rename a staged file over its target; fsync the target's directory. */
 int em_commit(const char *tmp, const char *path)
 {

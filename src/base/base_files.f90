@@ -13,6 +13,7 @@ module base_files
     private
     public :: write_whole, stage_file, commit_file, discard_file
     public :: lock_dir, unlock_dir, same_file, read_whole
+    public :: open_out, write_out, close_out
 
     interface
         function c_stage(path, data, n, tmp, cap) bind(c, name='em_stage') result(rc)
@@ -64,6 +65,28 @@ module base_files
             import :: c_int
             integer(c_int), value :: fd
         end subroutine c_close_read
+        function c_open_out(path, fd, tmp, cap) bind(c, name='em_open_out') result(rc)
+            import :: c_int, c_char, c_size_t
+            character(kind=c_char), intent(in) :: path(*)
+            integer(c_int), intent(out) :: fd
+            character(kind=c_char), intent(out) :: tmp(*)
+            integer(c_size_t), value :: cap
+            integer(c_int) :: rc
+        end function c_open_out
+        function c_write(fd, data, n) bind(c, name='em_write') result(rc)
+            import :: c_int, c_char, c_size_t
+            integer(c_int), value :: fd
+            character(kind=c_char), intent(in) :: data(*)
+            integer(c_size_t), value :: n
+            integer(c_int) :: rc
+        end function c_write
+        function c_close_out(fd, tmp, total) bind(c, name='em_close_out') result(rc)
+            import :: c_int, c_char, c_long_long
+            integer(c_int), value :: fd
+            character(kind=c_char), intent(in) :: tmp(*)
+            integer(c_long_long), value :: total
+            integer(c_int) :: rc
+        end function c_close_out
         subroutine c_strerror(rc, msg, cap) bind(c, name='em_strerror')
             import :: c_int, c_char, c_size_t
             integer(c_int), value :: rc
@@ -167,6 +190,44 @@ contains
         tmp = c_string(buf)
         msg = os_message(rc)
     end subroutine stage_file
+
+    !> Open a file to be written a piece at a time (write_out), whole or not
+    !> at all: a fresh temporary file beside path (tmp, its name) or, for a
+    !> device or FIFO target, the target itself (tmp empty). close_out ends
+    !> it; commit_file then renames it into place.
+    subroutine open_out(path, fd, tmp, msg)
+        character(len=*), intent(in) :: path
+        integer, intent(out) :: fd
+        character(len=:), allocatable, intent(out) :: tmp, msg
+        character(len=path_cap) :: buf
+        integer(c_int) :: cfd
+        buf = ''
+        msg = os_message(c_open_out(path // c_null_char, cfd, buf, int(path_cap, c_size_t)))
+        fd = int(cfd)
+        tmp = c_string(buf)
+    end subroutine open_out
+
+    !> Append data to a file of open_out (or to standard output, fd 1).
+    subroutine write_out(fd, data, msg)
+        integer, intent(in) :: fd
+        character(len=*), intent(in) :: data
+        character(len=:), allocatable, intent(out) :: msg
+        if (len(data) == 0) then
+            msg = ''
+            return
+        end if
+        msg = os_message(c_write(int(fd, c_int), data, int(len(data), c_size_t)))
+    end subroutine write_out
+
+    !> Close a file of open_out that should hold total bytes: fsynced and its
+    !> size checked when it is a temporary file, which is removed on failure.
+    subroutine close_out(fd, tmp, total, msg)
+        integer, intent(in) :: fd
+        character(len=*), intent(in) :: tmp
+        integer(c_long_long), intent(in) :: total
+        character(len=:), allocatable, intent(out) :: msg
+        msg = os_message(c_close_out(int(fd, c_int), tmp // c_null_char, total))
+    end subroutine close_out
 
     !> Rename a staged file over its target (the target's directory fsynced);
     !> nothing to do when it was written straight into a device (tmp empty).

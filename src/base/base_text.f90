@@ -4,20 +4,33 @@
 module base_text
     use, intrinsic :: iso_fortran_env, only: int64, real64
     use base_error, only: no_memory
+    use base_files, only: write_out
     implicit none
     private
     public :: text_t, str, fixed, mm, octal, lower, starts_with, ends_with, parse_int, parse_mm, &
               parse_real
 
-    !> Lines of text kept in one string, each ending in a newline.
+    !> Lines of text kept in one string, each ending in a newline. A text
+    !> attached to a file descriptor (attach) is a stream: what it holds is
+    !> written out whenever it passes DRAIN_AT bytes and by drain, so a text
+    !> of any length takes a bounded buffer. The first failed write is kept
+    !> (message) and later writes are skipped.
     type :: text_t
         character(len=:), allocatable :: s     !< the text; only s(1:n) is valid
         integer :: n = 0                       !< length in use
+        integer :: fd = -1                     !< the stream's descriptor, -1: none
+        integer(int64) :: written = 0          !< bytes written out so far
+        character(len=:), allocatable :: message  !< why a write failed
     contains
         procedure :: add => text_add
         procedure :: put => text_put
         procedure :: value => text_value
+        procedure :: attach => text_attach
+        procedure :: drain => text_drain
     end type text_t
+
+    !> A stream's buffer is written out past this many bytes.
+    integer, parameter :: DRAIN_AT = 1048576
 
     interface str
         module procedure str_int, str_int64
@@ -38,6 +51,7 @@ contains
         character(len=*), intent(in) :: chars
         character(len=:), allocatable :: bigger
         integer :: need, st
+        if (self%fd >= 0 .and. self%n > 0 .and. self%n + len(chars) > DRAIN_AT) call self%drain()
         need = self%n + len(chars)
         if (.not. allocated(self%s)) then
             allocate(character(len=max(4096, need)) :: self%s, stat=st)
@@ -52,6 +66,31 @@ contains
         self%s(self%n + 1:need) = chars
         self%n = need
     end subroutine text_put
+
+    !> Make the text a stream into file descriptor fd (1 = standard output,
+    !> or a file of base_files' open_out).
+    subroutine text_attach(self, fd)
+        class(text_t), intent(inout) :: self
+        integer, intent(in) :: fd
+        self%fd = fd
+        self%written = 0
+    end subroutine text_attach
+
+    !> Write out what a stream holds.
+    subroutine text_drain(self)
+        class(text_t), intent(inout) :: self
+        character(len=:), allocatable :: msg
+        if (self%fd < 0 .or. self%n == 0) return
+        if (.not. allocated(self%message)) then
+            call write_out(self%fd, self%s(1:self%n), msg)
+            if (len(msg) > 0) then
+                self%message = msg
+            else
+                self%written = self%written + self%n
+            end if
+        end if
+        self%n = 0
+    end subroutine text_drain
 
     !> The text so far.
     function text_value(self) result(s)

@@ -17,7 +17,8 @@ module em703_codec
     use base_text, only: str, octal, fixed, text_t
     implicit none
     private
-    public :: frame_t, tape_t, decode_tape, decode_bytes, encode_tape, frame_rows, frame_text, &
+    public :: frame_t, tape_t, decode_tape, decode_bytes, decoder_start, next_frame, &
+              encode_tape, frame_rows, frame_text, &
               tape_text, on_circle, frame_problem, describe_row
 
     ! Table I: service codes (octal), the same in both variants.
@@ -76,14 +77,30 @@ module em703_codec
         integer :: digit = -1     !< the digit of a digit row
     end type row_t
 
+    !> The reader's state; the tape image (a byte a row) is passed to every
+    !> call, so that it is held once, by whoever read it.
     type :: reader_t
-        character(len=:), allocatable :: data   !< the tape image, a byte a row
+        integer :: n = 0              !< rows in the image
         integer :: i = 0              !< rows consumed
         character(len=1) :: code = '8'
         integer :: evidence = 0       !< auto mode: the row that told the code
         integer :: digit_of(0:31) = -1
         integer :: foreign(0:31) = -1 !< digit of a row of the other variant
     end type reader_t
+
+    !> A tape read frame by frame (decoder_start, next_frame): the code
+    !> variant, whether a row told it, whether the opening GM was found, the
+    !> rows of the image and the frames read so far.
+    type, public :: decoder_t
+        character(len=1) :: code = '8'
+        logical :: told = .false.
+        logical :: opened = .false.
+        integer :: nrows = 0
+        integer :: nframes = 0
+        logical :: done = .true.         !< no frame left (end, or an error)
+        integer :: opener_row = 0        !< CYC row of an open cycle pair
+        type(reader_t) :: rd
+    end type decoder_t
 
 contains
 
@@ -282,15 +299,14 @@ contains
         end do
     end subroutine scan_code
 
-    !> The reader takes the tape image over (data is moved, not copied) and
-    !> gives it back with reader_done.
-    subroutine reader_init(rd, data, code, evidence)
+    !> A reader of a tape image of n rows in code "8" or "K".
+    subroutine reader_init(rd, n, code, evidence)
         type(reader_t), intent(out) :: rd
-        character(len=:), allocatable, intent(inout) :: data
+        integer, intent(in) :: n
         character(len=1), intent(in) :: code
         integer, intent(in) :: evidence
         integer :: d
-        call move_alloc(data, rd%data)
+        rd%n = n
         rd%code = code
         rd%evidence = evidence
         do d = 0, 9
@@ -313,22 +329,23 @@ contains
     !> The row just past the data.
     integer function end_row(rd)
         type(reader_t), intent(in) :: rd
-        end_row = len(rd%data) + 1
+        end_row = rd%n + 1
     end function end_row
 
     !> Next row with only the 5-track check; got = .false. at the end.
-    subroutine raw(rd, got, n, value, err)
+    subroutine raw(rd, data, got, n, value, err)
         type(reader_t), intent(inout) :: rd
+        character(len=*), intent(in) :: data
         logical, intent(out) :: got
         integer, intent(out) :: n, value
         type(error_t), allocatable, intent(inout) :: err
-        got = rd%i < len(rd%data)
+        got = rd%i < rd%n
         n = 0
         value = 0
         if (.not. got) return
         rd%i = rd%i + 1
         n = rd%i
-        value = iachar(rd%data(n:n))
+        value = iachar(data(n:n))
         if (value > 31 .or. value < 0) then
             call new_error(err, 'byte 0x' // hex2(value) // &
                 ' has bits above the low 5 set (not a 5-track row)', AT_ROW, n)
@@ -342,13 +359,14 @@ contains
     end function hex2
 
     !> Next row classified in the reader's variant; got = .false. at the end.
-    subroutine next_row(rd, got, row, err)
+    subroutine next_row(rd, data, got, row, err)
         type(reader_t), intent(inout) :: rd
+        character(len=*), intent(in) :: data
         logical, intent(out) :: got
         type(row_t), intent(out) :: row
         type(error_t), allocatable, intent(inout) :: err
         integer :: n, value, d
-        call raw(rd, got, n, value, err)
+        call raw(rd, data, got, n, value, err)
         if (allocated(err) .or. .not. got) return
         row%n = n
         row%value = value
@@ -362,7 +380,7 @@ contains
             if (rd%evidence > 0) then
                 call new_error(err, 'mixed code: digit ' // str(d) // ' punched as ' // &
                     octal(value, 2) // ' (octal), but row ' // str(rd%evidence) // ' has ' // &
-                    describe_row(iachar(rd%data(rd%evidence:rd%evidence))) // ' of code ' // rd%code, AT_ROW, n)
+                    describe_row(iachar(data(rd%evidence:rd%evidence))) // ' of code ' // rd%code, AT_ROW, n)
             else if (rd%code == 'K') then
                 call new_error(err, 'parity error: digit ' // str(d) // ' punched as ' // &
                     octal(value, 2) // ', controlled code expects ' // &
@@ -391,8 +409,9 @@ contains
     end function after_field
 
     !> The digits after an address; value and the row after them.
-    subroutine read_number(rd, name, signed, value, row, err)
+    subroutine read_number(rd, data, name, signed, value, row, err)
         type(reader_t), intent(inout) :: rd
+        character(len=*), intent(in) :: data
         character(len=*), intent(in) :: name
         logical, intent(in) :: signed
         integer(int64), intent(out) :: value
@@ -403,11 +422,11 @@ contains
         integer :: nxt
         value = 0
         negative = .false.
-        call next_row(rd, got, row, err)
+        call next_row(rd, data, got, row, err)
         if (allocated(err)) return
         if (got .and. signed .and. row%kind == KIND_MINUS) then
             negative = .true.
-            call next_row(rd, got, row, err)
+            call next_row(rd, data, got, row, err)
             if (allocated(err)) return
         end if
         label = name
@@ -426,7 +445,7 @@ contains
         end if
         if (row%digit == 0) then
             nxt = -1
-            if (rd%i < len(rd%data)) nxt = iachar(rd%data(rd%i + 1:rd%i + 1))
+            if (rd%i < rd%n) nxt = iachar(data(rd%i + 1:rd%i + 1))
             if (nxt >= 0 .and. nxt <= 31) then
                 if (rd%digit_of(nxt) >= 0) then
                     call new_error(err, 'leading zero in ' // name, AT_ROW, row%n)
@@ -444,7 +463,7 @@ contains
                 return
             end if
             value = value * 10 + row%digit
-            call next_row(rd, got, row, err)
+            call next_row(rd, data, got, row, err)
             if (allocated(err)) return
         end do
         if (.not. got) then
@@ -456,8 +475,9 @@ contains
     end subroutine read_number
 
     !> One frame from its first row (not GM).
-    subroutine read_frame(rd, first, f, err)
+    subroutine read_frame(rd, data, first, f, err)
         type(reader_t), intent(inout) :: rd
+        character(len=*), intent(in) :: data
         type(row_t), intent(in) :: first
         type(frame_t), intent(out) :: f
         type(error_t), allocatable, intent(inout) :: err
@@ -479,7 +499,7 @@ contains
                 return
             end if
             f%rows(index) = row%n
-            call read_number(rd, trim(FIELD_NAME(index)), index /= KIND_CYC, value, row, err)
+            call read_number(rd, data, trim(FIELD_NAME(index)), index /= KIND_CYC, value, row, err)
             if (allocated(err)) return
             if (index == KIND_CYC .and. value < 2) then
                 call new_error(err, 'CYC ' // str(value) // &
@@ -503,7 +523,7 @@ contains
         ndig = 0
         k = 0
         do
-            call next_row(rd, got, nxt, err)
+            call next_row(rd, data, got, nxt, err)
             if (allocated(err)) return
             if (.not. got) then
                 call new_error(err, 'missing GM at the end of the tape ' // &
@@ -566,63 +586,74 @@ contains
     end subroutine decode_tape
 
     !> decode_tape of a tape image held as bytes (a byte a row), as read from
-    !> its file: the reader takes the bytes over for the decoding and gives
-    !> them back, so that a tape is held once, a byte a row.
+    !> its file. Every frame is kept (tape%frames): for a tape of any length
+    !> use the decoder (decoder_start, next_frame), which holds one frame.
     subroutine decode_bytes(data, code, tape, err)
-        character(len=:), allocatable, intent(inout) :: data
+        character(len=*), intent(in) :: data
         character(len=*), intent(in) :: code
         type(tape_t), intent(out) :: tape
         type(error_t), allocatable, intent(out) :: err
-        type(reader_t) :: rd
-        call decode_reader(rd, data, code, tape, err)
-        if (allocated(rd%data)) call move_alloc(rd%data, data)
-    end subroutine decode_bytes
-
-    subroutine decode_reader(rd, data, code, tape, err)
-        type(reader_t), intent(inout) :: rd
-        character(len=:), allocatable, intent(inout) :: data
-        character(len=*), intent(in) :: code
-        type(tape_t), intent(out) :: tape
-        type(error_t), allocatable, intent(out) :: err
-        type(row_t) :: row
+        type(decoder_t) :: dec
         type(frame_t) :: f
         logical :: got
-        integer :: n, value, evidence, opener_row
-        character(len=1) :: c
-
-        tape%nrows = len(data)
         allocate(tape%frames(16))
+        call decoder_start(dec, data, code, err)
+        tape%nrows = len(data)
+        tape%code = dec%code
+        tape%told = dec%told
+        tape%opened = dec%opened
+        if (allocated(err)) return
+        do
+            call next_frame(dec, data, f, got, err)
+            if (allocated(err) .or. .not. got) exit
+            call push(tape, f)
+        end do
+    end subroutine decode_bytes
+
+    !> Start reading a tape image (bytes 0..255, a byte a row) frame by frame;
+    !> code is "8", "K" or "auto" (decode_tape). Reads the leader up to the
+    !> opening GM; err when there is none.
+    subroutine decoder_start(dec, data, code, err)
+        type(decoder_t), intent(out) :: dec
+        character(len=*), intent(in) :: data
+        character(len=*), intent(in) :: code
+        type(error_t), allocatable, intent(out) :: err
+        logical :: got
+        integer :: n, value, evidence
+        character(len=1) :: c
+        dec%nrows = len(data)
+        dec%done = .true.
         evidence = 0
         select case (code)
         case ('8', 'K')
             c = code
-            tape%told = .true.
+            dec%told = .true.
         case ('auto')
             call scan_code(data, c, evidence)
-            tape%told = evidence > 0
+            dec%told = evidence > 0
         case default
             call new_error(err, 'code must be 8, K or auto, not "' // code // '"')
             return
         end select
-        tape%code = c
-        call reader_init(rd, data, c, evidence)
+        dec%code = c
+        call reader_init(dec%rd, len(data), c, evidence)
 
         ! Leader: blank rows up to the opening GM.
         do
-            call raw(rd, got, n, value, err)
+            call raw(dec%rd, data, got, n, value, err)
             if (allocated(err)) return
             if (.not. got) then
-                if (len(rd%data) == 0) then
+                if (len(data) == 0) then
                     call new_error(err, 'missing GM at the start of the tape (the tape is empty)', &
-                                   AT_ROW, end_row(rd))
+                                   AT_ROW, end_row(dec%rd))
                 else
                     call new_error(err, 'missing GM at the start of the tape (only blank rows)', &
-                                   AT_ROW, end_row(rd))
+                                   AT_ROW, end_row(dec%rd))
                 end if
                 return
             end if
             if (value == ROW_GM) then
-                tape%opened = .true.
+                dec%opened = .true.
                 exit
             end if
             if (value /= ROW_BLANK) then
@@ -631,48 +662,69 @@ contains
                 return
             end if
         end do
+        dec%done = .false.
+    end subroutine decoder_start
 
-        ! The array: frames up to the closing GM.
-        opener_row = 0
-        do
-            call next_row(rd, got, row, err)
-            if (allocated(err)) return
-            if (.not. got) then
-                call new_error(err, 'missing GM at the end of the tape', AT_ROW, end_row(rd))
-                return
-            end if
-            if (row%kind == KIND_GM) exit
-            call read_frame(rd, row, f, err)
-            if (allocated(err)) return
-            if (opener_row > 0) then
-                if (f%cyc /= 0) then
-                    call new_error(err, 'CYC on the second frame of a cycle pair (its CYC is at row ' &
-                                   // str(opener_row) // ')', AT_ROW, f%rows(5))
-                    return
-                end if
-                opener_row = 0
-            else if (f%cyc /= 0) then
-                opener_row = f%rows(5)
-            end if
-            call push(tape, f)
-        end do
-        if (opener_row > 0) then
-            call new_error(err, 'CYC needs a following frame (CYC on the last frame)', &
-                           AT_ROW, opener_row)
+    !> The next frame of the tape (data: the same image as decoder_start's);
+    !> got = .false. after the closing GM, once the trailer is found blank.
+    !> The first error stops the decoder: err names its row.
+    subroutine next_frame(dec, data, f, got, err)
+        type(decoder_t), intent(inout) :: dec
+        character(len=*), intent(in) :: data
+        type(frame_t), intent(out) :: f
+        logical, intent(out) :: got
+        type(error_t), allocatable, intent(out) :: err
+        type(row_t) :: row
+        integer :: n, value
+        got = .false.
+        if (dec%done) return
+        dec%done = .true.
+        call next_row(dec%rd, data, got, row, err)
+        if (allocated(err)) then
+            got = .false.
             return
         end if
-
-        ! Trailer: blank rows only.
-        do
-            call raw(rd, got, n, value, err)
-            if (allocated(err) .or. .not. got) return
-            if (value /= ROW_BLANK) then
-                call new_error(err, 'data after the closing GM: found ' // describe_row(value), &
-                               AT_ROW, n)
+        if (.not. got) then
+            call new_error(err, 'missing GM at the end of the tape', AT_ROW, end_row(dec%rd))
+            return
+        end if
+        if (row%kind == KIND_GM) then
+            got = .false.
+            if (dec%opener_row > 0) then
+                call new_error(err, 'CYC needs a following frame (CYC on the last frame)', &
+                               AT_ROW, dec%opener_row)
                 return
             end if
-        end do
-    end subroutine decode_reader
+            ! Trailer: blank rows only.
+            do
+                call raw(dec%rd, data, got, n, value, err)
+                if (allocated(err) .or. .not. got) exit
+                if (value /= ROW_BLANK) then
+                    call new_error(err, 'data after the closing GM: found ' // describe_row(value), &
+                                   AT_ROW, n)
+                    exit
+                end if
+            end do
+            got = .false.
+            return
+        end if
+        got = .false.
+        call read_frame(dec%rd, data, row, f, err)
+        if (allocated(err)) return
+        if (dec%opener_row > 0) then
+            if (f%cyc /= 0) then
+                call new_error(err, 'CYC on the second frame of a cycle pair (its CYC is at row ' &
+                               // str(dec%opener_row) // ')', AT_ROW, f%rows(5))
+                return
+            end if
+            dec%opener_row = 0
+        else if (f%cyc /= 0) then
+            dec%opener_row = f%rows(5)
+        end if
+        dec%nframes = dec%nframes + 1
+        dec%done = .false.
+        got = .true.
+    end subroutine next_frame
 
     subroutine push(tape, f)
         type(tape_t), intent(inout) :: tape

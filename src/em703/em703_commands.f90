@@ -5,25 +5,32 @@
 !> standard error as one line naming the file and the row (or line).
 module em703_commands
     use, intrinsic :: iso_fortran_env, only: int64, real64, output_unit
-    use base_error, only: error_t, error_text, new_error
-    use base_io, only: read_bytes, read_text, write_text, write_bytes, print_text, say
-    use base_files, only: same_file
+    use base_error, only: error_t, error_text, new_error, AT_ROW
+    use base_io, only: read_text, write_bytes, say
+    use base_files, only: same_file, open_out, close_out, commit_file
     use base_sha256, only: sha256_hex
     use base_text, only: text_t, str, fixed, mm, ends_with
-    use em703_codec, only: tape_t, decode_bytes, tape_text
-    use em703_sim, only: run_t, simulate, field_check, shift_run
+    use em703_codec, only: frame_t, decoder_t, decoder_start, next_frame, frame_text
+    use em703_sim, only: run_t, simulate_image, field_check, shift_run, MAX_DRAWN
     use em703_jobsheet, only: job_t, layer_t, read_job, NLAYERS
     use em703_svg, only: svg_run, svg_job
     use em703_gcode, only: gcode_program
     use em703_gerber, only: gerber_image
     use em703_punch, only: punch_text
     use em703_view, only: view_tape, guess_code
-    use em703_split, only: split_move
+    use em703_split, only: frames_needed, split_frame
     implicit none
     private
     public :: run_list, run_sim, run_svg, run_gcode, run_gerber, run_punch, run_view, run_split
 
     integer, parameter, public :: EXIT_OK = 0, EXIT_INPUT = 1, EXIT_USAGE = 2
+
+    !> The bytes of rows that fit 5 tracks (0..31).
+    character(len=32), parameter :: FIVE_TRACK = achar(0) // achar(1) // achar(2) // achar(3) // &
+        achar(4) // achar(5) // achar(6) // achar(7) // achar(8) // achar(9) // achar(10) // &
+        achar(11) // achar(12) // achar(13) // achar(14) // achar(15) // achar(16) // achar(17) // &
+        achar(18) // achar(19) // achar(20) // achar(21) // achar(22) // achar(23) // achar(24) // &
+        achar(25) // achar(26) // achar(27) // achar(28) // achar(29) // achar(30) // achar(31)
 
     !> The files this run has read (outputs may not replace them).
     type :: path_t
@@ -33,25 +40,21 @@ module em703_commands
 
 contains
 
-    !> Read and decode a tape; status 0, 1 (bad tape) or 2 (cannot read). With
-    !> layer (a tape of a job sheet), the tape must have the size and SHA-256
-    !> the job sheet records for it, when it records them.
-    subroutine load_tape(path, code, tape, status, layer, job_path)
+    !> Read a tape and run it on the simulated coordinatograph (em703_sim:
+    !> the frames are decoded one at a time, none is kept); status 0, 1 (bad
+    !> tape) or 2 (cannot read). With layer (a tape of a job sheet), the tape
+    !> must have the size and SHA-256 the job sheet records for it, when it
+    !> records them.
+    subroutine load_run(path, code, run, status, layer, job_path)
         character(len=*), intent(in) :: path, code
-        type(tape_t), intent(out) :: tape
+        type(run_t), intent(out) :: run
         integer, intent(out) :: status
         type(layer_t), intent(in), optional :: layer
         character(len=*), intent(in), optional :: job_path
         type(error_t), allocatable :: err
         character(len=:), allocatable :: bytes
-        status = EXIT_OK
-        call read_text(path, bytes, err)
-        if (allocated(err)) then
-            call say(error_text(err))
-            status = EXIT_USAGE
-            return
-        end if
-        call remember_input(path)
+        call read_tape(path, bytes, status)
+        if (status /= EXIT_OK) return
         if (present(layer)) then
             if ((layer%bytes >= 0 .and. layer%bytes /= len(bytes)) .or. &
                 (len(layer%sha256) > 0 .and. layer%sha256 /= sha256_hex(bytes))) then
@@ -63,32 +66,112 @@ contains
                 return
             end if
         end if
-        call decode_bytes(bytes, code, tape, err)
+        call simulate_image(bytes, code, run, err)
         if (allocated(err)) then
             err%file = path
             call say(error_text(err))
             status = EXIT_INPUT
         end if
-    end subroutine load_tape
+    end subroutine load_run
 
-    !> Write text to a file, or to standard output when path is "" or "-".
-    integer function emit(path, text) result(status)
+    !> Read a tape image whole (a byte a row); status 0 or 2 (cannot read).
+    subroutine read_tape(path, bytes, status)
         character(len=*), intent(in) :: path
-        type(text_t), intent(in) :: text
+        character(len=:), allocatable, intent(out) :: bytes
+        integer, intent(out) :: status
         type(error_t), allocatable :: err
         status = EXIT_OK
+        call read_text(path, bytes, err)
+        if (allocated(err)) then
+            call say(error_text(err))
+            status = EXIT_USAGE
+            return
+        end if
+        call remember_input(path)
+    end subroutine read_tape
+
+    !> Open an output: the file path, written whole or not at all (a fresh
+    !> temporary file, renamed by close_output), or standard output when
+    !> path is "" or "-". text becomes a stream into it, so that an output
+    !> of any size takes a bounded buffer. Status 2 (and a message) when
+    !> path is one of the run's inputs or cannot be created.
+    integer function open_output(path, text, tmp) result(status)
+        character(len=*), intent(in) :: path
+        type(text_t), intent(inout) :: text
+        character(len=:), allocatable, intent(out) :: tmp
+        character(len=:), allocatable :: msg
+        integer :: fd
+        tmp = ''
+        status = EXIT_OK
         if (len(path) == 0 .or. path == '-') then
-            call print_text(text%value())
+            flush(output_unit)
+            call text%attach(1)
             return
         end if
         status = refuse_input(path)
         if (status /= EXIT_OK) return
-        call write_text(path, text%value(), err)
-        if (allocated(err)) then
-            call say(error_text(err))
+        call open_out(path, fd, tmp, msg)
+        if (len(msg) > 0) then
+            call cannot_write(path, msg)
+            status = EXIT_USAGE
+            return
+        end if
+        call text%attach(fd)
+    end function open_output
+
+    !> End an output of open_output: the rest written, the file fsynced,
+    !> checked and renamed into place; on any failure the earlier file is
+    !> left as it was, no temporary file is left, and the status is 2.
+    integer function close_output(path, text, tmp) result(status)
+        character(len=*), intent(in) :: path, tmp
+        type(text_t), intent(inout) :: text
+        character(len=:), allocatable :: msg
+        status = EXIT_OK
+        call text%drain()
+        if (text%fd == 1) then
+            if (allocated(text%message)) then
+                call say('em703: cannot write standard output: ' // text%message)
+                status = EXIT_USAGE
+            end if
+            return
+        end if
+        if (allocated(text%message)) then
+            call close_out(text%fd, tmp, -1_int64, msg)      ! abandoned: removed
+            call cannot_write(path, text%message)
+            status = EXIT_USAGE
+            return
+        end if
+        call close_out(text%fd, tmp, text%written, msg)
+        if (len(msg) == 0) call commit_file(tmp, path, msg)
+        if (len(msg) > 0) then
+            call cannot_write(path, msg)
             status = EXIT_USAGE
         end if
-    end function emit
+    end function close_output
+
+    subroutine cannot_write(path, msg)
+        character(len=*), intent(in) :: path, msg
+        type(error_t), allocatable :: err
+        call new_error(err, 'cannot write: ' // msg)
+        err%file = path
+        call say(error_text(err))
+    end subroutine cannot_write
+
+    !> Status 1 (and a message naming the row) when a run executes more
+    !> frames than the drawing and program writers take (MAX_DRAWN).
+    integer function too_long(path, run) result(status)
+        character(len=*), intent(in) :: path
+        type(run_t), intent(in) :: run
+        type(error_t), allocatable :: err
+        status = EXIT_OK
+        if (run%executed <= MAX_DRAWN) return
+        call new_error(err, 'the tape runs ' // str(run%executed) // ' frames (cycles unrolled): ' // &
+            'more than the ' // str(MAX_DRAWN) // ' that svg, gcode and gerber write one by one ' // &
+            '(sim takes any tape)', AT_ROW, run%long_row)
+        err%file = path
+        call say(error_text(err))
+        status = EXIT_INPUT
+    end function too_long
 
     !> Note a file this run reads: no output may be written over it.
     subroutine remember_input(path)
@@ -119,28 +202,57 @@ contains
 
     ! ------------------------------------------------------------------
     !> em703 list: the frames of a tape, its code variant, or its first error.
+    !> The tape is decoded twice, a frame at a time: once for the head line
+    !> (its counts, and the error), once for the frames.
     integer function run_list(path, code, utf8, bare) result(status)
         character(len=*), intent(in) :: path, code
         logical, intent(in) :: utf8, bare
-        integer, allocatable :: rows(:)
-        type(tape_t) :: tape
+        character(len=:), allocatable :: bytes, head, gm, tmp
+        character(len=1) :: told
+        type(decoder_t) :: dec
+        type(frame_t) :: f
+        type(error_t), allocatable :: err
         type(text_t) :: text
-        character(len=:), allocatable :: head
-        call load_tape(path, code, tape, status)
-        if (status == EXIT_USAGE) return
+        logical :: got
+        integer :: n, s2
+        call read_tape(path, bytes, status)
+        if (status /= EXIT_OK) return
+        call decoder_start(dec, bytes, code, err)
+        do while (.not. allocated(err))
+            call next_frame(dec, bytes, f, got, err)
+            if (.not. got) exit
+        end do
+        if (allocated(err)) then
+            err%file = path
+            call say(error_text(err))
+            status = EXIT_INPUT
+        end if
+        s2 = open_output('', text, tmp)
         if (.not. bare) then
-            head = '# code ' // tape%code
-            if (.not. tape%told) head = head // ' (no digit row tells 8 from K)'
-            head = head // ', ' // str(tape%nrows) // ' rows, ' // str(tape%nframes) // &
-                   trim(merge(' frame ', ' frames', tape%nframes == 1))
+            head = '# code ' // dec%code
+            if (.not. dec%told) head = head // ' (no digit row tells 8 from K)'
+            head = head // ', ' // str(dec%nrows) // ' rows, ' // str(dec%nframes) // &
+                   trim(merge(' frame ', ' frames', dec%nframes == 1))
             if (status /= EXIT_OK) head = head // ' before the error'
             call text%add(head)
         end if
-        if (tape%opened) then
-            call tape_text(tape%frames(1:tape%nframes), utf8, text)
-            if (status /= EXIT_OK) text%n = text%n - merge(5, 3, utf8)   ! no closing GM
+        if (dec%opened) then
+            gm = 'GM'
+            if (utf8) gm = char(208) // char(147) // char(208) // char(156)   ! ГМ
+            call text%add(gm)
+            n = dec%nframes
+            told = dec%code                        ! (dec is reset by decoder_start)
+            call decoder_start(dec, bytes, told, err)
+            do while (n > 0)
+                call next_frame(dec, bytes, f, got, err)
+                if (.not. got) exit
+                call text%add(frame_text(f, utf8))
+                n = n - 1
+            end do
+            if (status == EXIT_OK) call text%add(gm)
         end if
-        call print_text(text%value())
+        s2 = close_output('', text, tmp)
+        if (s2 /= EXIT_OK) status = s2
     end function run_list
 
     ! ------------------------------------------------------------------
@@ -149,26 +261,19 @@ contains
         character(len=*), intent(in) :: path, code, svg_path
         integer, intent(in) :: num, den
         integer(int64), intent(in) :: start_x, start_y, tool
-        integer, allocatable :: rows(:)
-        type(tape_t) :: tape
         type(run_t) :: run
         type(text_t) :: text, svg
-        type(error_t), allocatable :: err, field_err
-        call load_tape(path, code, tape, status)
+        type(error_t), allocatable :: field_err
+        character(len=:), allocatable :: tmp
+        integer :: s2
+        call load_run(path, code, run, status)
         if (status /= EXIT_OK) return
-        call simulate(tape%frames(1:tape%nframes), run, err)
-        if (allocated(err)) then
-            err%file = path
-            call say(error_text(err))
-            status = EXIT_INPUT
-            return
-        end if
-        call field_check(run, tape%frames(1:tape%nframes), start_x, start_y, num, den, field_err)
-        call text%add('code = ' // tape%code)
-        call text%add('frames = ' // str(tape%nframes))
+        call field_check(run, start_x, start_y, num, den, field_err)
+        call text%add('code = ' // run%code)
+        call text%add('frames = ' // str(run%nframes))
         call text%add('executed = ' // str(run%executed))
-        call text%add('rows = ' // str(tape%nrows))
-        call text%add('tape_m = ' // fixed(tape%nrows * 2.54_real64 / 1000, 3))
+        call text%add('rows = ' // str(run%nrows))
+        call text%add('tape_m = ' // fixed(run%nrows * 2.54_real64 / 1000, 3))
         call text%add('drawn_mm = ' // fixed(run%drawn_mm, 2))
         call text%add('line_mm = ' // fixed(run%line_mm, 2))
         call text%add('arc_mm = ' // fixed(run%arc_mm, 2))
@@ -185,10 +290,15 @@ contains
         call text%add('start_x_mm = ' // mm(start_x))
         call text%add('start_y_mm = ' // mm(start_y))
         call text%add('field = ' // trim(merge('left  ', 'inside', allocated(field_err))))
-        call print_text(text%value())
+        s2 = open_output('', text, tmp)
+        s2 = close_output('', text, tmp)
         if (len(svg_path) > 0) then
+            status = too_long(path, run)
+            if (status /= EXIT_OK) return
+            status = open_output(svg_path, svg, tmp)
+            if (status /= EXIT_OK) return
             call svg_run(run, tool, 'EM-703 tape ' // path // ', tool ' // mm(tool) // ' mm', svg)
-            status = emit(svg_path, svg)
+            status = close_output(svg_path, svg, tmp)
             if (status /= EXIT_OK) return
         end if
         if (allocated(field_err)) then
@@ -201,8 +311,9 @@ contains
     ! ------------------------------------------------------------------
     !> The tapes of a job sheet, decoded in the job's code and run one after
     !> another (each starts where the previous one ended). Status 0, 1 or 2;
-    !> complete: every tape was run (status 1 then means a tape that does not
-    !> end at its start point, a warning the output can live with).
+    !> complete: every tape was run and can be drawn (status 1 then means a
+    !> tape that does not end at its start point, a warning the output can
+    !> live with).
     subroutine load_job(path, job, runs, labels, tools, status, complete)
         character(len=*), intent(in) :: path
         type(job_t), intent(out) :: job
@@ -212,8 +323,6 @@ contains
         integer, intent(out) :: status
         logical, intent(out) :: complete
         type(error_t), allocatable :: err
-        integer, allocatable :: rows(:)
-        type(tape_t) :: tape
         integer :: l
         integer(int64) :: ox, oy
         logical :: open_end
@@ -232,16 +341,10 @@ contains
         do l = 1, NLAYERS
             labels(l) = 'tape ' // job%layers(l)%key // ' ' // job%layers(l)%tape
             tools(l) = job%layers(l)%tool
-            call load_tape(job%layers(l)%path, job%code, tape, status, job%layers(l), &
-                           path)
+            call load_run(job%layers(l)%path, job%code, runs(l), status, job%layers(l), path)
             if (status /= EXIT_OK) return
-            call simulate(tape%frames(1:tape%nframes), runs(l), err)
-            if (allocated(err)) then
-                err%file = job%layers(l)%path
-                call say(error_text(err))
-                status = EXIT_INPUT
-                return
-            end if
+            status = too_long(job%layers(l)%path, runs(l))
+            if (status /= EXIT_OK) return
             if (l < NLAYERS .and. (runs(l)%end_x /= 0 .or. runs(l)%end_y /= 0)) then
                 call say(job%layers(l)%path // ': the tape ends at (' // mm(runs(l)%end_x) // &
                     ', ' // mm(runs(l)%end_y) // ') mm from its start point, not at it: ' // &
@@ -265,6 +368,7 @@ contains
         integer(int64) :: tools(NLAYERS)
         type(text_t) :: text
         character(len=5) :: keys(NLAYERS)
+        character(len=:), allocatable :: tmp
         integer :: l, s2
         logical :: complete
         call load_job(path, job, runs, labels, tools, status, complete)
@@ -272,10 +376,15 @@ contains
         do l = 1, NLAYERS
             keys(l) = job%layers(l)%key
         end do
+        s2 = open_output(out, text, tmp)
+        if (s2 /= EXIT_OK) then
+            status = s2
+            return
+        end if
         call svg_job(runs, tools, keys, 'EM-703 job ' // job%name // ': small ' // mm(tools(1)) // &
             ' mm (red), large ' // mm(tools(2)) // ' mm (blue), cond ' // mm(tools(3)) // &
             ' mm (green)', text)
-        s2 = emit(out, text)
+        s2 = close_output(out, text, tmp)
         if (s2 /= EXIT_OK) status = s2
     end function run_svg
 
@@ -289,33 +398,36 @@ contains
         character(len=200) :: labels(NLAYERS)
         integer(int64) :: tools(NLAYERS)
         type(text_t) :: text
-        integer, allocatable :: rows(:)
-        type(tape_t) :: tape
-        type(error_t), allocatable :: err
+        character(len=:), allocatable :: tmp
         integer :: s2
         logical :: complete
         if (ends_with(path, '.job')) then
             call load_job(path, job, runs, labels, tools, status, complete)
             if (.not. complete) return
+            s2 = open_output(out, text, tmp)
+            if (s2 /= EXIT_OK) then
+                status = s2
+                return
+            end if
             call gcode_program(runs, labels, tools, 'EM-703 job ' // job%name // ', code ' // &
                                job%code, chord_tol, use_z, text)
         else
-            call load_tape(path, 'auto', tape, status)
+            call load_run(path, 'auto', runs(1), status)
             if (status /= EXIT_OK) return
-            call simulate(tape%frames(1:tape%nframes), runs(1), err)
-            if (allocated(err)) then
-                err%file = path
-                call say(error_text(err))
-                status = EXIT_INPUT
-                return
-            end if
+            status = too_long(path, runs(1))
+            if (status /= EXIT_OK) return
             labels(1) = 'tape ' // path
             tools(1) = 0
+            s2 = open_output(out, text, tmp)
+            if (s2 /= EXIT_OK) then
+                status = s2
+                return
+            end if
             call gcode_program(runs(1:1), labels(1:1), tools(1:1), 'EM-703 tape, code ' // &
-                               tape%code // ', ' // str(tape%nframes) // ' frames', &
+                               runs(1)%code // ', ' // str(runs(1)%nframes) // ' frames', &
                                chord_tol, use_z, text)
         end if
-        s2 = emit(out, text)
+        s2 = close_output(out, text, tmp)
         if (s2 /= EXIT_OK) status = s2
     end function run_gcode
 
@@ -327,6 +439,7 @@ contains
         character(len=200) :: labels(NLAYERS)
         integer(int64) :: tools(NLAYERS)
         type(text_t) :: text
+        character(len=:), allocatable :: tmp
         integer :: l, s2
         logical :: complete
         call load_job(path, job, runs, labels, tools, status, complete)
@@ -340,9 +453,14 @@ contains
                 return
             end if
         end do
+        s2 = open_output(out, text, tmp)
+        if (s2 /= EXIT_OK) then
+            status = s2
+            return
+        end if
         call gerber_image(runs, labels, tools, 'EM-703 job ' // job%name // ', code ' // &
                           job%code, text)
-        s2 = emit(out, text)
+        s2 = close_output(out, text, tmp)
         if (s2 /= EXIT_OK) status = s2
     end function run_gerber
 
@@ -388,42 +506,43 @@ contains
     integer function run_view(path, code, first, last) result(status)
         character(len=*), intent(in) :: path, code
         integer, intent(in) :: first, last
-        integer, allocatable :: rows(:)
+        character(len=:), allocatable :: bytes, c, tmp
         type(error_t), allocatable :: err
         type(text_t) :: text
-        character(len=:), allocatable :: c
-        status = EXIT_OK
-        call read_bytes(path, rows, err)
-        if (allocated(err)) then
-            call say(error_text(err))
-            status = EXIT_USAGE
-            return
-        end if
+        integer :: s2
+        call read_tape(path, bytes, status)
+        if (status /= EXIT_OK) return
         c = code
-        if (c == 'auto') c = guess_code(rows)
-        if (c == 'em703' .and. any(rows > 31)) then
+        if (c == 'auto') c = guess_code(bytes)
+        if (c == 'em703' .and. verify(bytes, FIVE_TRACK) > 0) then
             call new_error(err, 'a row has holes beyond track 5: not an EM-703 tape')
             err%file = path
             call say(error_text(err))
             status = EXIT_INPUT
             return
         end if
-        call view_tape(rows, c, first, last, text)
-        call print_text(text%value())
+        s2 = open_output('', text, tmp)
+        call view_tape(bytes, c, first, last, text)
+        status = close_output('', text, tmp)
     end function run_view
 
     ! ------------------------------------------------------------------
     !> em703 split: the frames of the straight move (dx, dy) pulses, at most
-    !> max_pulses per axis each (em703_split), one "DX DY" pair a line.
+    !> max_pulses per axis each (em703_split), one "DX DY" pair a line, each
+    !> written as it is found.
     integer function run_split(dx, dy, max_pulses) result(status)
         integer(int64), intent(in) :: dx, dy, max_pulses
-        integer(int64), allocatable :: dxs(:), dys(:)
-        integer :: k, ios
-        call split_move(dx, dy, max_pulses, dxs, dys)
-        do k = 1, size(dxs)
-            write(output_unit, '(i0, 1x, i0)', iostat=ios) dxs(k), dys(k)
+        integer(int64) :: k, n, fx, fy
+        type(text_t) :: text
+        character(len=:), allocatable :: tmp
+        integer :: s2
+        s2 = open_output('', text, tmp)
+        n = frames_needed(dx, dy, max_pulses)
+        do k = 1, n
+            call split_frame(dx, dy, k, n, fx, fy)
+            call text%add(str(fx) // ' ' // str(fy))
         end do
-        status = EXIT_OK
+        status = close_output('', text, tmp)
     end function run_split
 
 end module em703_commands

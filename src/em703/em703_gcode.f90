@@ -19,9 +19,10 @@
 !> the last chord ends exactly at the tape's end point.
 module em703_gcode
     use, intrinsic :: iso_fortran_env, only: int64, real64
-    use em703_sim, only: run_t, seg_t, SEG_LINE, SEG_TRAVEL, SEG_ARC, SEG_DOT, SEG_RAISE, &
+    use em703_sim, only: run_t, seg_t, walker_t, walk_start, next_seg, SEG_LINE, SEG_TRAVEL, SEG_ARC, SEG_DOT, SEG_RAISE, &
                          TWO_PI, LINE_SPEED, ARC_SPEED
     use base_text, only: text_t, str, fixed, mm
+    use base_error, only: error_t
     implicit none
     private
     public :: gcode_program, chord_count
@@ -63,7 +64,11 @@ contains
         logical, intent(in) :: use_z
         type(text_t), intent(inout) :: text
         type(state_t) :: st
-        integer :: l, i
+        type(walker_t) :: w
+        type(error_t), allocatable :: err
+        type(seg_t) :: s
+        logical :: got
+        integer :: l
         st%use_z = use_z
         call text%add('%')
         call text%add('(' // clean(title) // ')')
@@ -86,8 +91,12 @@ contains
                 call up(st, text)
                 call block(st, text, 'T' // str(l) // ' M06')
             end if
-            do i = 1, runs(l)%nseg
-                call move(st, text, runs(l)%segs(i), chord_tol)
+            call walk_start(w, runs(l), err)
+            if (allocated(err)) exit
+            do
+                call next_seg(w, runs(l), s, got)
+                if (.not. got) exit
+                call move(st, text, s, chord_tol)
             end do
         end do
         call up(st, text)

@@ -10,8 +10,9 @@
 !> is a D02 move.
 module em703_gerber
     use, intrinsic :: iso_fortran_env, only: int64, real64
-    use em703_sim, only: run_t, seg_t, SEG_LINE, SEG_TRAVEL, SEG_ARC, SEG_DOT, TWO_PI
+    use em703_sim, only: run_t, seg_t, walker_t, walk_start, next_seg, SEG_LINE, SEG_TRAVEL, SEG_ARC, SEG_DOT, TWO_PI
     use base_text, only: text_t, str, mm
+    use base_error, only: error_t
     implicit none
     private
     public :: gerber_image
@@ -29,10 +30,12 @@ contains
         integer(int64), intent(in) :: tools(:)
         character(len=*), intent(in) :: title
         type(text_t), intent(inout) :: text
-        integer :: l, i, mode
-        logical :: known
+        integer :: l, mode
+        logical :: known, got
         integer(int64) :: cx, cy, mx, my
         type(seg_t) :: s
+        type(walker_t) :: w
+        type(error_t), allocatable :: err
         call text%add('G04 ' // clean(title) // '*')
         call text%add('G04 millimetres from the start point, one aperture per tape*')
         call text%add('%FSLAX66Y66*%')
@@ -49,8 +52,11 @@ contains
         do l = 1, size(runs)
             call text%add('G04 ' // clean(trim(labels(l))) // ', tool ' // mm(tools(l)) // ' mm*')
             call text%add('D' // str(9 + l) // '*')
-            do i = 1, runs(l)%nseg
-                s = runs(l)%segs(i)
+            call walk_start(w, runs(l), err)
+            if (allocated(err)) exit
+            do
+                call next_seg(w, runs(l), s, got)
+                if (.not. got) exit
                 if (.not. known .or. cx /= s%x0 .or. cy /= s%y0) then
                     call text%add(xy(s%x0, s%y0) // 'D02*')
                     known = .true.

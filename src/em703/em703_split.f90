@@ -11,7 +11,7 @@ module em703_split
     use base_error, only: no_memory
     implicit none
     private
-    public :: frames_needed, split_move
+    public :: frames_needed, split_move, split_frame
 
 contains
 
@@ -33,6 +33,14 @@ contains
         p = sign(q, d)
     end function division_point
 
+    !> Frame k of the n frames of the move (dx, dy): (fx, fy).
+    pure subroutine split_frame(dx, dy, k, n, fx, fy)
+        integer(int64), intent(in) :: dx, dy, k, n
+        integer(int64), intent(out) :: fx, fy
+        fx = division_point(dx, k, n) - division_point(dx, k - 1, n)
+        fy = division_point(dy, k, n) - division_point(dy, k - 1, n)
+    end subroutine split_frame
+
     !> The frames (dxs(i), dys(i)), i = 1..n, of the move (dx, dy).
     subroutine split_move(dx, dy, max_pulses, dxs, dys)
         integer(int64), intent(in) :: dx, dy, max_pulses
@@ -43,8 +51,7 @@ contains
         allocate(dxs(n), dys(n), stat=st)
         if (st /= 0) call no_memory('the split move', 16 * n)
         do k = 1, n
-            dxs(k) = division_point(dx, k, n) - division_point(dx, k - 1, n)
-            dys(k) = division_point(dy, k, n) - division_point(dy, k - 1, n)
+            call split_frame(dx, dy, k, n, dxs(k), dys(k))
         end do
     end subroutine split_move
 

@@ -8,8 +8,9 @@
 !> bytes on every run.
 module em703_svg
     use, intrinsic :: iso_fortran_env, only: int64, real64
-    use em703_sim, only: run_t, seg_t, SEG_LINE, SEG_TRAVEL, SEG_ARC, SEG_DOT, PI, TWO_PI
+    use em703_sim, only: run_t, seg_t, walker_t, walk_start, next_seg, SEG_LINE, SEG_TRAVEL, SEG_ARC, SEG_DOT, PI, TWO_PI
     use base_text, only: text_t, fixed, mm
+    use base_error, only: error_t
     implicit none
     private
     public :: svg_run, svg_job
@@ -160,11 +161,16 @@ contains
         logical, intent(in) :: travel
         integer(int64), intent(in), optional :: tool
         character(len=*), intent(in), optional :: colour
-        integer :: i
         type(seg_t) :: s
+        type(walker_t) :: w
+        type(error_t), allocatable :: err
+        logical :: got
         character(len=:), allocatable :: flags
-        do i = 1, run%nseg
-            s = run%segs(i)
+        call walk_start(w, run, err)
+        if (allocated(err)) return
+        do
+            call next_seg(w, run, s, got)
+            if (.not. got) exit
             select case (s%kind)
             case (SEG_TRAVEL)
                 if (travel) call text%add('<line x1="' // mm(s%x0) // '" y1="' // mm(-s%y0) // &

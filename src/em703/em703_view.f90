@@ -12,34 +12,76 @@ module em703_view
     private
     public :: view_tape, guess_code
 
+    !> A tape image as rows (integers 0..255) or as bytes (a character a row).
+    interface view_tape
+        module procedure view_rows, view_bytes
+    end interface view_tape
+    interface guess_code
+        module procedure guess_rows, guess_bytes
+    end interface guess_code
+
 contains
+
+    function as_bytes(rows) result(data)
+        integer, intent(in) :: rows(:)
+        character(len=size(rows)) :: data
+        integer :: i
+        do i = 1, size(rows)
+            data(i:i) = achar(iand(rows(i), 255))
+        end do
+    end function as_bytes
+
+    function guess_rows(rows) result(code)
+        integer, intent(in) :: rows(:)
+        character(len=:), allocatable :: code
+        code = guess_bytes(as_bytes(rows))
+    end function guess_rows
+
+    subroutine view_rows(rows, code, first, last, text)
+        integer, intent(in) :: rows(:)
+        character(len=*), intent(in) :: code
+        integer, intent(in) :: first, last
+        type(text_t), intent(inout) :: text
+        call view_bytes(as_bytes(rows), code, first, last, text)
+    end subroutine view_rows
 
     !> "em703" when every row fits 5 tracks; otherwise "iso" when most punched
     !> rows have an even number of holes, "eia" when most have an odd number.
-    function guess_code(rows) result(code)
-        integer, intent(in) :: rows(:)
+    function guess_bytes(data) result(code)
+        character(len=*), intent(in) :: data
         character(len=:), allocatable :: code
-        integer :: i, even, odd
-        if (all(rows >= 0 .and. rows <= 31)) then
+        integer :: i, even, odd, v
+        if (all_five(data)) then
             code = 'em703'
             return
         end if
         even = 0
         odd = 0
-        do i = 1, size(rows)
-            if (rows(i) == 0) cycle
-            if (mod(holes(rows(i)), 2) == 0) then
+        do i = 1, len(data)
+            v = iachar(data(i:i))
+            if (v == 0) cycle
+            if (mod(holes(v), 2) == 0) then
                 even = even + 1
             else
                 odd = odd + 1
             end if
         end do
         code = merge('iso', 'eia', even >= odd)
-    end function guess_code
+    end function guess_bytes
+
+    logical function all_five(data)
+        character(len=*), intent(in) :: data
+        integer :: i
+        all_five = .false.
+        do i = 1, len(data)
+            if (iachar(data(i:i)) > 31) return
+        end do
+        all_five = .true.
+    end function all_five
 
     !> The picture of rows first..last of a tape in code "em703", "iso" or "eia".
-    subroutine view_tape(rows, code, first, last, text)
-        integer, intent(in) :: rows(:)
+    subroutine view_bytes(data, code, first, last, text)
+        character(len=*), intent(in) :: data
         character(len=*), intent(in) :: code
         integer, intent(in) :: first, last
         type(text_t), intent(inout) :: text
@@ -58,10 +100,10 @@ contains
         border = '      +' // repeat('-', 2 * ntracks + 5) // '+'
         call text%add(border)
         ! The first and the last punched row (leader before, trailer after).
-        nz1 = size(rows) + 1
+        nz1 = len(data) + 1
         nz2 = 0
-        do i = 1, size(rows)
-            if (rows(i) /= 0) then
+        do i = 1, len(data)
+            if (row(i) /= 0) then
                 nz1 = min(nz1, i)
                 nz2 = i
             end if
@@ -71,35 +113,39 @@ contains
         gm2 = 0
         controlled = .false.
         if (code == 'em703') then
-            do i = 1, size(rows)
-                if (rows(i) == ROW_GM) then
+            do i = 1, len(data)
+                if (row(i) == ROW_GM) then
                     if (gm1 == 0) gm1 = i
                     gm2 = i
                 end if
                 if (gm1 == 0 .or. i <= gm1) cycle
-                if (any(rows(i) == DIGITS_K([3, 5, 6, 9]))) controlled = .true.
+                if (any(row(i) == DIGITS_K([3, 5, 6, 9]))) controlled = .true.
             end do
         end if
-        do i = max(1, first), min(size(rows), last)
-            call text%add(picture(rows(i), ntracks, feed_after, i) // '| ' // &
-                          octal(rows(i), 3) // '   ' // meaning(i))
+        do i = max(1, first), min(len(data), last)
+            call text%add(picture(row(i), ntracks, feed_after, i) // '| ' // &
+                          octal(row(i), 3) // '   ' // meaning(i))
         end do
         call text%add(border)
     contains
+        integer function row(i)
+            integer, intent(in) :: i
+            row = iachar(data(i:i))
+        end function row
         function meaning(i) result(s)
             integer, intent(in) :: i
             character(len=:), allocatable :: s
             select case (code)
             case ('iso')
-                s = iso_meaning(rows(i))
-                if (rows(i) == 0) s = blank_name(i)
+                s = iso_meaning(row(i))
+                if (row(i) == 0) s = blank_name(i)
             case ('eia')
-                s = eia_meaning(rows(i))
-                if (rows(i) == 0) s = blank_name(i)
+                s = eia_meaning(row(i))
+                if (row(i) == 0) s = blank_name(i)
             case default
-                s = em703_meaning(rows(i), controlled)
-                if (rows(i) == 0 .and. (gm1 == 0 .or. i < gm1)) s = 'leader'
-                if (rows(i) == 0 .and. gm2 > 0 .and. i > gm2) s = 'trailer'
+                s = em703_meaning(row(i), controlled)
+                if (row(i) == 0 .and. (gm1 == 0 .or. i < gm1)) s = 'leader'
+                if (row(i) == 0 .and. gm2 > 0 .and. i > gm2) s = 'trailer'
             end select
         end function meaning
         !> A blank row of an 8-track tape: leader before the first punched
@@ -111,7 +157,7 @@ contains
             if (i < nz1) s = 'leader'
             if (i > nz2) s = 'trailer'
         end function blank_name
-    end subroutine view_tape
+    end subroutine view_bytes
 
     !> "   21 |o o o . o o    " : the row number and the holes, tracks from the
     !> highest on the left, the feed hole after track feed_after.
