@@ -59,3 +59,11 @@ if [ -d build ] && [ "$(cat build/.sources.sha256 2>/dev/null)" != "$sources" ];
     rm -rf build
 fi
 mkdir -p build && echo "$sources" > build/.sources.sha256
+# Nor does fpm compile a program or test again when only a module it uses
+# changed (it compares each file's own text): after any change to the
+# library's sources, the objects of app/ and test/ are made again.
+library=$(find legacy src -name '*.f' -o -name '*.f90' -o -name '*.c' | LC_ALL=C sort | xargs cat | sha256sum | cut -d' ' -f1)
+if [ "$(cat build/.library.sha256 2>/dev/null)" != "$library" ]; then
+    rm -f build/*/*/app_*.o build/*/*/test_*.o
+    echo "$library" > build/.library.sha256
+fi
