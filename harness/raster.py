@@ -24,12 +24,12 @@ Decisions:
 from __future__ import annotations
 
 import math
-from collections.abc import Sequence
+from collections.abc import Callable, Iterator, Sequence
 from dataclasses import dataclass, field
 
 import numpy as np
 
-from .shapes import AnyShape, Layer, run_shapes
+from .shapes import TWO_PI, AnyShape, ArcBand, Disc, Layer, RoundRect, Stroke, run_shapes
 from .sim import Run
 
 #: Default pitch and the pitches tried for big boards, in units (0.01 mm).
@@ -170,6 +170,8 @@ class Report:
     excess: int
     worst_holes: list[tuple[float, float, float, float]] = field(default_factory=list)
     worst_excess: list[tuple[float, float, float]] = field(default_factory=list)
+    #: The tiles (tile row, tile column) with a hole or excess pixel.
+    differ: list[tuple[int, int]] = field(default_factory=list, repr=False)
 
     @property
     def ok(self) -> bool:
@@ -192,31 +194,6 @@ class Report:
 
     def __str__(self) -> str:
         return self.summary()
-
-
-def _tiles(grid: Grid, shapes: Sequence[AnyShape], pad: float,
-           tiles: dict[tuple[int, int], list[int]], offset: int) -> None:
-    """Add shape indices (plus ``offset``) to the tiles they can reach."""
-    span = TILE * grid.pitch
-    half = span * math.sqrt(0.5)
-    for n, s in enumerate(shapes):
-        b = s.bbox()
-        ti0 = max(0, math.floor((b[0] - pad - grid.x0) / span))
-        ti1 = min(math.ceil(grid.nx / TILE) - 1, math.floor((b[1] + pad - grid.x0) / span))
-        tj0 = max(0, math.floor((b[2] - pad - grid.y0) / span))
-        tj1 = min(math.ceil(grid.ny / TILE) - 1, math.floor((b[3] + pad - grid.y0) / span))
-        if ti0 > ti1 or tj0 > tj1:
-            continue
-        # a few tile rows at a time, so that a huge shape (a 10 m circle
-        # has some 15 million tiles in its box) needs little memory
-        rows = max(1, _TILE_CHUNK // (ti1 - ti0 + 1))
-        for r0 in range(tj0, tj1 + 1, rows):
-            ti, tj = np.meshgrid(np.arange(ti0, ti1 + 1), np.arange(r0, min(tj1, r0 + rows - 1) + 1))
-            cx = grid.x0 + (ti + 0.5) * span
-            cy = grid.y0 + (tj + 0.5) * span
-            near = s.sdf(cx, cy) <= half + pad
-            for a, c in zip(tj[near].tolist(), ti[near].tolist()):
-                tiles.setdefault((a, c), []).append(n + offset)
 
 
 def _top(values: np.ndarray, k: int) -> np.ndarray:
@@ -245,21 +222,288 @@ def _spread(cands: list[tuple[float, ...]], k: int,
     return out
 
 
+# ---------------------------------------------------------------------------
+# The shapes as arrays: every shape's signed distance, many at once.
+# ---------------------------------------------------------------------------
+#: Kinds of item a shape is cut into for evaluation in bulk.
+_DISC, _RECT, _SEG, _ARC = range(4)
+#: Most (pixel, item) pairs evaluated at once.
+PAIRS = 1 << 20
+#: Most tiles held in one batch (boolean pass; a tenth of it with distances).
+BATCH_TILES = 64
+
+
+@dataclass
+class ShapeSet:
+    """Shapes as arrays, for evaluating many (point, shape) pairs with one
+    numpy call per kind.  Each shape is one or more *items*: a disc, a
+    rounded rectangle, a segment of a polyline (the first one also carries
+    the distance to the polyline's first point) or an arc band.  An item's
+    distance minus nothing is the shape's :meth:`sdf` formula term by term,
+    so that the minimum over a shape's items is the shape's own ``sdf``
+    bit for bit (``min(a, b) - r == min(a - r, b - r)`` in floating point).
+    ``first``/``count``: per shape, its first item and how many."""
+
+    n: int
+    bbox: np.ndarray                       # (n, 4): x0, x1, y0, y1
+    kind: np.ndarray                       # per item
+    owner: np.ndarray                      # per item: shape index
+    par: np.ndarray                        # (items, 12) parameters
+    first: np.ndarray                      # per shape
+    count: np.ndarray                      # per shape
+
+    @classmethod
+    def of(cls, shapes: Sequence[AnyShape]) -> ShapeSet:
+        kinds: list[int] = []
+        owners: list[int] = []
+        pars: list[tuple[float, ...]] = []
+        first = np.zeros(len(shapes), dtype=np.int64)
+        count = np.zeros(len(shapes), dtype=np.int64)
+        boxes = np.zeros((len(shapes), 4))
+        for n, s in enumerate(shapes):
+            first[n] = len(kinds)
+            boxes[n] = s.bbox()
+            if isinstance(s, Disc):
+                kinds.append(_DISC)
+                pars.append((s.cx, s.cy, s.r))
+            elif isinstance(s, RoundRect):
+                kinds.append(_RECT)
+                pars.append((s.cx, s.cy, s.w / 2 - s.rc, s.h / 2 - s.rc, s.rc))
+            elif isinstance(s, Stroke):
+                pts = s.points
+                lead = True
+                for (ax, ay), (bx, by) in zip(pts, pts[1:]):
+                    ex, ey = bx - ax, by - ay
+                    ee = ex * ex + ey * ey
+                    if ee == 0:
+                        continue
+                    kinds.append(_SEG)
+                    pars.append((ax, ay, ex, ey, ee, s.r, 1.0 if lead else 0.0,
+                                 pts[0][0], pts[0][1]))
+                    owners.append(n)
+                    lead = False
+                if lead:                    # no segment: a disc at the first point
+                    kinds.append(_DISC)
+                    pars.append((pts[0][0], pts[0][1], s.r))
+                else:
+                    count[n] = len(kinds) - first[n]
+                    continue
+            elif isinstance(s, ArcBand):
+                a1 = s.a0 + s.sweep
+                kinds.append(_ARC)
+                pars.append((s.cx, s.cy, s.rad, s.a0, s.sweep, s.hw, 1.0 if s.full else 0.0,
+                             s.rad * math.cos(s.a0), s.rad * math.sin(s.a0),
+                             s.rad * math.cos(a1), s.rad * math.sin(a1)))
+            else:
+                raise TypeError(f"not a shape: {s!r}")
+            owners.append(n)
+            count[n] = len(kinds) - first[n]
+        par = np.array([p + (0.0,) * (12 - len(p)) for p in pars]).reshape(-1, 12)
+        return cls(len(shapes), boxes, np.asarray(kinds, dtype=np.int64),
+                   np.asarray(owners, dtype=np.int64), par, first, count)
+
+    def items_of(self, shapes: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """The items of the given shapes: (item indices, position in
+        ``shapes`` of each item's shape)."""
+        cnt = self.count[shapes]
+        pos = np.repeat(np.arange(shapes.size), cnt)
+        start = np.repeat(np.cumsum(cnt) - cnt, cnt)
+        items = self.first[shapes][pos] + np.arange(pos.size) - start
+        return items, pos
+
+    def item_sdf(self, items: np.ndarray, x: np.ndarray, y: np.ndarray) -> np.ndarray:
+        """Each item's term of its shape's signed distance at (x, y) (one
+        point per item, same length)."""
+        out = np.empty(items.size)
+        kind = self.kind[items]
+        for k in (_DISC, _RECT, _SEG, _ARC):
+            sel = np.flatnonzero(kind == k)
+            if not sel.size:
+                continue
+            p = self.par[items[sel]]
+            xs, ys = x[sel], y[sel]
+            if k == _DISC:
+                d = np.hypot(xs - p[:, 0], ys - p[:, 1]) - p[:, 2]
+            elif k == _RECT:
+                qx = np.abs(xs - p[:, 0]) - p[:, 2]
+                qy = np.abs(ys - p[:, 1]) - p[:, 3]
+                outside = np.hypot(np.maximum(qx, 0.0), np.maximum(qy, 0.0))
+                inside = np.minimum(np.maximum(qx, qy), 0.0)
+                d = outside + inside - p[:, 4]
+            elif k == _SEG:
+                px, py = xs - p[:, 0], ys - p[:, 1]
+                ex, ey = p[:, 2], p[:, 3]
+                t = np.clip((px * ex + py * ey) / p[:, 4], 0.0, 1.0)
+                d = np.hypot(px - t * ex, py - t * ey)
+                lead = p[:, 6] != 0
+                if lead.any():
+                    d[lead] = np.minimum(np.hypot(xs[lead] - p[lead, 7], ys[lead] - p[lead, 8]),
+                                         d[lead])
+                d -= p[:, 5]
+            else:
+                rx, ry = xs - p[:, 0], ys - p[:, 1]
+                ring = np.abs(np.hypot(rx, ry) - p[:, 2])
+                d = ring
+                part = p[:, 6] == 0
+                if part.any():
+                    q = p[part]
+                    prx, pry = rx[part], ry[part]
+                    ang = np.arctan2(pry, prx)
+                    t = np.where(q[:, 4] >= 0, np.mod(ang - q[:, 3], TWO_PI),
+                                 np.mod(q[:, 3] - ang, TWO_PI))
+                    ends = np.minimum(np.hypot(prx - q[:, 7], pry - q[:, 8]),
+                                      np.hypot(prx - q[:, 9], pry - q[:, 10]))
+                    d = d.copy()
+                    d[part] = np.where(t <= np.abs(q[:, 4]), ring[part], ends)
+                d = d - p[:, 5]
+            out[sel] = d
+        return out
+
+    def nearest(self, x: np.ndarray, y: np.ndarray, upto: int | None = None
+                ) -> tuple[np.ndarray, np.ndarray]:
+        """At each point, the least signed distance of the shapes (the first
+        ``upto`` of them, if given) and which shape has it (the first on
+        ties; -1 and inf when there are none)."""
+        x = np.asarray(x, dtype=float)
+        y = np.asarray(y, dtype=float)
+        best = np.full(x.size, np.inf)
+        which = np.full(x.size, -1, dtype=np.int64)
+        n = self.n if upto is None else upto
+        items = np.arange(self.first[n] if n < self.n else self.kind.size)
+        step = max(1, PAIRS // max(1, items.size))
+        for a in range(0, x.size, step):
+            m = min(x.size, a + step) - a
+            pt = np.repeat(np.arange(m), items.size)
+            it = np.tile(items, m)
+            d = self.item_sdf(it, x[a:a + m][pt], y[a:a + m][pt])
+            per = np.full((m, n), np.inf)
+            np.minimum.at(per, (pt, self.owner[it]), d)
+            k = np.argmin(per, axis=1) if n else np.zeros(m, dtype=np.int64)
+            if n:
+                best[a:a + m] = per[np.arange(m), k]
+                which[a:a + m] = np.where(np.isfinite(best[a:a + m]), k, -1)
+        return best, which
+# ---------------------------------------------------------------------------
+# Tiles: which shapes reach which tile, and evaluating many tiles at once.
+# ---------------------------------------------------------------------------
+def _memberships(grid: Grid, ss: ShapeSet, pads: np.ndarray,
+                 clip: tuple[int, int, int, int] | None) -> tuple[np.ndarray, np.ndarray]:
+    """(tile key, shape) of every tile each shape can reach: the tiles whose
+    centre lies within the tile's half diagonal plus the shape's pad of the
+    shape (a shape whose box grown by its pad lies in one tile: that tile).
+    Tile key = tile row * tile columns + tile column.  ``clip``: the tile
+    ranges (ti0, ti1, tj0, tj1) kept, None for all."""
+    span = TILE * grid.pitch
+    half = span * math.sqrt(0.5)
+    ntx, nty = math.ceil(grid.nx / TILE), math.ceil(grid.ny / TILE)
+    b = ss.bbox
+    ti0 = np.maximum(0, np.floor((b[:, 0] - pads - grid.x0) / span)).astype(np.int64)
+    ti1 = np.minimum(ntx - 1, np.floor((b[:, 1] + pads - grid.x0) / span)).astype(np.int64)
+    tj0 = np.maximum(0, np.floor((b[:, 2] - pads - grid.y0) / span)).astype(np.int64)
+    tj1 = np.minimum(nty - 1, np.floor((b[:, 3] + pads - grid.y0) / span)).astype(np.int64)
+    ok = (ti0 <= ti1) & (tj0 <= tj1)
+    one = ok & (ti0 == ti1) & (tj0 == tj1)
+    keys = [tj0[one] * ntx + ti0[one]]
+    owners = [np.flatnonzero(one)]
+    if clip is not None:
+        ti0, ti1 = np.maximum(ti0, clip[0]), np.minimum(ti1, clip[1])
+        tj0, tj1 = np.maximum(tj0, clip[2]), np.minimum(tj1, clip[3])
+    multi = np.flatnonzero(ok & ~one & (ti0 <= ti1) & (tj0 <= tj1))
+    wide = ti1[multi] - ti0[multi] + 1
+    tiles = wide * (tj1[multi] - tj0[multi] + 1) * ss.count[multi]
+    huge = tiles > PAIRS
+    for n in multi[huge].tolist():        # one huge shape: a few tile rows at a time
+        keys_n = _shape_tiles(grid, ss, n, int(ti0[n]), int(ti1[n]), int(tj0[n]), int(tj1[n]),
+                              half + float(pads[n]))
+        keys.append(keys_n)
+        owners.append(np.full(keys_n.size, n, dtype=np.int64))
+    small, cost = multi[~huge], tiles[~huge]
+    bounds = np.flatnonzero(np.diff(np.cumsum(cost) // PAIRS)) + 1
+    for sel in np.split(small, bounds):    # the others, a few at a time
+        if not sel.size:
+            continue
+        items, pos = ss.items_of(sel)
+        n_of = sel[pos]
+        w = (ti1 - ti0 + 1)[n_of]
+        cnt = w * (tj1 - tj0 + 1)[n_of]
+        rep = np.repeat(np.arange(items.size), cnt)
+        off = np.arange(rep.size) - np.repeat(np.cumsum(cnt) - cnt, cnt)
+        ti = ti0[n_of][rep] + off % w[rep]
+        tj = tj0[n_of][rep] + off // w[rep]
+        cx = grid.x0 + (ti + 0.5) * span
+        cy = grid.y0 + (tj + 0.5) * span
+        near = ss.item_sdf(items[rep], cx, cy) <= half + pads[n_of][rep]
+        keys.append(tj[near] * ntx + ti[near])
+        owners.append(n_of[rep][near])
+    key = np.concatenate(keys)
+    own = np.concatenate(owners)
+    if clip is not None:
+        ti, tj = key % ntx, key // ntx
+        keep = (ti >= clip[0]) & (ti <= clip[1]) & (tj >= clip[2]) & (tj <= clip[3])
+        key, own = key[keep], own[keep]
+    # one row per (tile, shape), in tile order, then shape order
+    order = np.lexsort((own, key))
+    key, own = key[order], own[order]
+    first = np.ones(key.size, dtype=bool)
+    first[1:] = (key[1:] != key[:-1]) | (own[1:] != own[:-1])
+    return key[first], own[first]
+
+
+def _shape_tiles(grid: Grid, ss: ShapeSet, n: int, ti0: int, ti1: int, tj0: int, tj1: int,
+                 reach: float) -> np.ndarray:
+    """The tile keys of one huge shape, a few tile rows at a time."""
+    span = TILE * grid.pitch
+    ntx = math.ceil(grid.nx / TILE)
+    its = np.arange(ss.first[n], ss.first[n] + ss.count[n])
+    rows = max(1, PAIRS // ((ti1 - ti0 + 1) * its.size))
+    out = []
+    for r0 in range(tj0, tj1 + 1, rows):
+        tj, ti = np.meshgrid(np.arange(r0, min(tj1, r0 + rows - 1) + 1), np.arange(ti0, ti1 + 1),
+                             indexing="ij")
+        tj, ti = tj.ravel(), ti.ravel()
+        m = tj.size
+        it = np.tile(its, m)
+        at = np.repeat(np.arange(m), its.size)
+        d = ss.item_sdf(it, grid.x0 + (ti[at] + 0.5) * span, grid.y0 + (tj[at] + 0.5) * span)
+        near = np.zeros(m, dtype=bool)
+        near[at[d <= reach]] = True
+        out.append(tj[near] * ntx + ti[near])
+    return np.concatenate(out) if out else np.zeros(0, dtype=np.int64)
+
+
 @dataclass
 class Plan:
     """The tiles :func:`compare` evaluates: ``shapes`` is the ideal shapes
-    then the drawn ones (``n_ideal`` of the first kind); ``tiles`` maps
-    (tile row, tile column) to the indices into ``shapes`` that may reach
-    the tile; ideal shapes are evaluated with window margin ``pad``, drawn
-    ones with ``pitch``."""
+    then the drawn ones (``n_ideal`` of the first kind); ``keys`` the tiles
+    (tile row * ``ntx`` + tile column, ascending), and the shapes that may
+    reach tile ``keys[t]`` are ``members[start[t]:start[t + 1]]`` (indices
+    into ``shapes``, ascending); ideal shapes are evaluated with window
+    margin ``pad``, drawn ones with ``pitch``."""
 
     grid: Grid
     pitch: float
     pad: float
     shapes: list[AnyShape]
     n_ideal: int
-    tiles: dict[tuple[int, int], list[int]]
+    keys: np.ndarray
+    start: np.ndarray
+    members: np.ndarray
     pixels: int
+    set: ShapeSet
+
+    @property
+    def ntx(self) -> int:
+        return math.ceil(self.grid.nx / TILE)
+
+    def where(self, t: int) -> tuple[int, int]:
+        """(tile row, tile column) of the t-th tile."""
+        return divmod(int(self.keys[t]), self.ntx)
+
+    @property
+    def tiles(self) -> dict[tuple[int, int], list[int]]:
+        """The tiles as a dict (tile row, tile column) -> shape indices."""
+        return {self.where(t): self.members[self.start[t]:self.start[t + 1]].tolist()
+                for t in range(self.keys.size)}
 
     def tile(self, tj: int, ti: int) -> Grid:
         """The grid of one tile."""
@@ -267,80 +511,238 @@ class Plan:
         is_ = slice(ti * TILE, min(self.grid.nx, (ti + 1) * TILE))
         return self.grid.sub(js, is_)
 
+    def batches(self, tiles: np.ndarray | None = None, limit: int = BATCH_TILES
+                ) -> Iterator[np.ndarray]:
+        """The given tile numbers (default all), in order, cut into batches
+        of at most ``limit`` tiles and about :data:`PAIRS` pairs."""
+        ts = np.arange(self.keys.size) if tiles is None else np.asarray(tiles, dtype=np.int64)
+        if not ts.size:
+            return
+        cost = self._tile_cost[ts]
+        acc = 0.0
+        cur: list[int] = []
+        for t, c in zip(ts.tolist(), cost.tolist()):
+            if cur and (len(cur) >= limit or acc + c > 4 * PAIRS):
+                yield np.asarray(cur, dtype=np.int64)
+                cur, acc = [], 0.0
+            cur.append(t)
+            acc += c
+        if cur:
+            yield np.asarray(cur, dtype=np.int64)
+
+    def __post_init__(self) -> None:
+        self._windows()
+
+    def _windows(self) -> None:
+        """Every (tile, shape) row's window in the tile: j0, j1, i0, i1
+        (pixels of the tile), and its cost (pixels x items)."""
+        g, p = self.grid, self.pitch
+        t = np.repeat(np.arange(self.keys.size), np.diff(self.start))
+        tj, ti = np.divmod(self.keys[t], self.ntx)
+        m = self.members
+        pad = np.where(m < self.n_ideal, self.pad, p)
+        b = self.set.bbox[m]
+        tx0 = g.x0 + (ti * TILE) * p
+        ty0 = g.y0 + (tj * TILE) * p
+        tnx = np.minimum(g.nx, (ti + 1) * TILE) - ti * TILE
+        tny = np.minimum(g.ny, (tj + 1) * TILE) - tj * TILE
+        i0 = np.maximum(0, np.floor((b[:, 0] - pad - tx0) / p - 0.5)).astype(np.int64)
+        i1 = np.minimum(tnx, np.ceil((b[:, 1] + pad - tx0) / p + 0.5)).astype(np.int64)
+        j0 = np.maximum(0, np.floor((b[:, 2] - pad - ty0) / p - 0.5)).astype(np.int64)
+        j1 = np.minimum(tny, np.ceil((b[:, 3] + pad - ty0) / p + 0.5)).astype(np.int64)
+        empty = (i0 >= i1) | (j0 >= j1)
+        i1[empty] = i0[empty]
+        j1[empty] = j0[empty]
+        self._win = np.stack([j0, j1, i0, i1], axis=1)
+        self._cost = ((j1 - j0) * (i1 - i0) * self.set.count[m]).astype(float)
+        self._tx0, self._ty0 = tx0, ty0
+        self._tile_cost = np.bincount(t, weights=self._cost, minlength=self.keys.size)
+
+    def tile_pixels(self, t: np.ndarray) -> np.ndarray:
+        """Pixels of each given tile."""
+        tj, ti = np.divmod(self.keys[t], self.ntx)
+        g = self.grid
+        return ((np.minimum(g.nx, (ti + 1) * TILE) - ti * TILE)
+                * (np.minimum(g.ny, (tj + 1) * TILE) - tj * TILE))
+
+    def pairs(self, batch: np.ndarray, ideal: bool) -> Iterator[tuple[np.ndarray, ...]]:
+        """The (pixel, shape) pairs of a batch of tiles, ideal or drawn
+        shapes, in chunks of about :data:`PAIRS`: (flat pixel index into
+        a (len(batch), TILE, TILE) array, shape index, signed distance)."""
+        rows = np.concatenate([np.arange(self.start[t], self.start[t + 1]) for t in batch]) \
+            if batch.size else np.zeros(0, dtype=np.int64)
+        slot = np.repeat(np.arange(batch.size), np.diff(self.start)[batch])
+        m = self.members[rows]
+        keep = (m < self.n_ideal) if ideal else (m >= self.n_ideal)
+        keep &= self._cost[rows] > 0
+        rows, slot = rows[keep], slot[keep]
+        if not rows.size:
+            return
+        cost = np.cumsum(self._cost[rows])
+        cuts = np.searchsorted(cost, np.arange(PAIRS, cost[-1], PAIRS), side="right")
+        p = self.pitch
+        for part_rows, part_slot in zip(np.split(rows, cuts), np.split(slot, cuts)):
+            if not part_rows.size:
+                continue
+            items, pos = self.set.items_of(self.members[part_rows])
+            r = part_rows[pos]
+            j0, j1, i0, i1 = self._win[r].T
+            w = i1 - i0
+            cnt = (j1 - j0) * w
+            rep = np.repeat(np.arange(items.size), cnt)
+            off = np.arange(rep.size) - np.repeat(np.cumsum(cnt) - cnt, cnt)
+            wr = w[rep]
+            lj = j0[rep] + off // wr
+            li = i0[rep] + off % wr
+            x = self._tx0[r][rep] + (li + 0.5) * p
+            y = self._ty0[r][rep] + (lj + 0.5) * p
+            d = self.set.item_sdf(items[rep], x, y)
+            pix = (part_slot[pos][rep] * TILE + lj) * TILE + li
+            yield pix, self.set.owner[items[rep]], d
+
+    def flags(self, batch: np.ndarray, tol: float
+              ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """Booleans of a batch, (len(batch), TILE, TILE): drawn (a drawn
+        shape at distance <= 0), inside the ideal shrunk by ``tol``, inside
+        the ideal grown by ``tol``."""
+        size = batch.size * TILE * TILE
+        on = np.zeros(size, dtype=bool)
+        inner = np.zeros(size, dtype=bool)
+        near = np.zeros(size, dtype=bool)
+        for pix, _, d in self.pairs(batch, False):
+            on[pix[d <= 0]] = True
+        for pix, _, d in self.pairs(batch, True):
+            inner[pix[d <= -tol]] = True
+            near[pix[d <= tol]] = True
+        shape = (batch.size, TILE, TILE)
+        return on.reshape(shape), inner.reshape(shape), near.reshape(shape)
+
+    def distances(self, batch: np.ndarray, ideal: bool) -> tuple[np.ndarray, np.ndarray]:
+        """Least signed distance of the batch's ideal (or drawn) shapes at
+        every pixel, (len(batch), TILE, TILE), +inf where none reaches, and
+        which shape has it (index into ``shapes``; the first on ties, -1
+        where none): :func:`argmin_sdf` of each tile."""
+        size = batch.size * TILE * TILE
+        best = np.full(size, np.inf)
+        chunks = list(self.pairs(batch, ideal))
+        for pix, _, d in chunks:
+            np.minimum.at(best, pix, d)
+        which = np.full(size, np.iinfo(np.int64).max, dtype=np.int64)
+        for pix, own, d in chunks:
+            eq = d == best[pix]
+            np.minimum.at(which, pix[eq], own[eq])
+        which[which == np.iinfo(np.int64).max] = -1
+        shape = (batch.size, TILE, TILE)
+        return best.reshape(shape), which.reshape(shape)
+
+
+def clip_tiles(grid: Grid, clip: Box | None) -> tuple[int, int, int, int] | None:
+    """The tile ranges (ti0, ti1, tj0, tj1) that meet the box ``clip``."""
+    if clip is None:
+        return None
+    span = TILE * grid.pitch
+    return (math.floor((clip[0] - grid.x0) / span), math.floor((clip[1] - grid.x0) / span),
+            math.floor((clip[2] - grid.y0) / span), math.floor((clip[3] - grid.y0) / span))
+
 
 def plan(ideal: Sequence[AnyShape], drawn: Sequence[AnyShape], tol: float,
          pitch: float | None = None, max_pixels: int = MAX_PIXELS,
-         reach: float = 0.0) -> Plan | None:
+         reach: float = 0.0, clip: Box | None = None,
+         shapes: ShapeSet | None = None) -> Plan | None:
     """Choose the pitch (the first of :data:`PITCHES` below ``tol`` that
-    keeps the evaluated pixels within ``max_pixels``) and the tiles for
-    comparing ``drawn`` with ``ideal`` at tolerance ``tol``; None when both
-    are empty.  ValueError when no pitch is small enough.  Ideal shapes are
-    evaluated up to ``tol`` + pitch + ``reach`` outside themselves (more
-    ``reach`` tells how far excess lies from the nearest shape)."""
+    keeps the evaluated pixels within ``max_pixels``, else the coarsest)
+    and the tiles for comparing ``drawn`` with ``ideal`` at tolerance
+    ``tol``; None when both are empty.  Ideal shapes are evaluated up to
+    ``tol`` + pitch + ``reach`` outside themselves (more ``reach`` tells
+    how far excess lies from the nearest shape).  Only the tiles that meet
+    the box ``clip`` (units) are kept, when given.  ``shapes``: the ideal
+    then the drawn shapes as a :class:`ShapeSet`, if already made."""
     if pitch is not None:
         candidates: tuple[float, ...] = (pitch,)
     else:
         candidates = tuple(p for p in PITCHES if p < tol) or (tol / 2,)
     if any(p >= tol for p in candidates):
         raise ValueError(f"pitch {candidates[0]} must be smaller than tolerance {tol}")
-    box = union_box([s.bbox() for s in ideal] + [s.bbox() for s in drawn])
-    if box is None:
+    all_shapes = list(ideal) + list(drawn)
+    if not all_shapes:
         return None
+    ss = shapes if shapes is not None else ShapeSet.of(all_shapes)
+    b = ss.bbox
+    box = (float(b[:, 0].min()), float(b[:, 1].max()), float(b[:, 2].min()),
+           float(b[:, 3].max()))
+    n_ideal = len(ideal)
     for p in candidates:
         grid = make_grid(box, p, tol + 2 * p, max_pixels=10**15)
         pad = tol + p + reach
-        tiles: dict[tuple[int, int], list[int]] = {}
-        _tiles(grid, ideal, pad, tiles, 0)
-        _tiles(grid, drawn, p, tiles, len(ideal))
-        pixels = sum((min(grid.nx, (ti + 1) * TILE) - ti * TILE)
-                     * (min(grid.ny, (tj + 1) * TILE) - tj * TILE) for tj, ti in tiles)
-        if pixels <= max_pixels:
+        pads = np.where(np.arange(ss.n) < n_ideal, pad, p)
+        keys, own = _memberships(grid, ss, pads, clip_tiles(grid, clip))
+        tkeys, start = np.unique(keys, return_index=True)
+        start = np.append(start, keys.size)
+        pl = Plan(grid, p, pad, all_shapes, n_ideal, tkeys, start, own, 0, ss)
+        pl.pixels = int(pl.tile_pixels(np.arange(tkeys.size)).sum())
+        if pl.pixels <= max_pixels:
             break
-    else:
-        raise ValueError(f"coverage check needs about {pixels} pixels even at "
-                         f"{candidates[-1] / 100:.2f} mm pitch (limit {max_pixels})")
-    return Plan(grid, p, pad, list(ideal) + list(drawn), len(ideal), tiles, pixels)
+    return pl
 
 
 def compare(run: Run, tool: float, layer: Layer | Sequence[AnyShape], tol: float = 5,
             pitch: float | None = None, max_pixels: int = MAX_PIXELS,
-            examples: int = 5) -> Report:
+            examples: int = 5, clip: Box | None = None,
+            progress: Callable[[int, int], None] | None = None,
+            drawn: Sequence[AnyShape] | None = None,
+            shapes: ShapeSet | None = None) -> Report:
     """Compare what ``run`` draws with ``tool`` (units) against the ideal
     ``layer`` at tolerance ``tol`` (units).
 
     holes = pixels of the ideal shrunk by ``tol`` that are not drawn;
-    excess = drawn pixels outside the ideal grown by ``tol``.
+    excess = drawn pixels outside the ideal grown by ``tol``.  Only the
+    tiles meeting the box ``clip`` are looked at, when given.  ``progress``
+    is told (tiles done, tiles) after each batch of tiles.  ``drawn``
+    (:func:`run_shapes` of the run) and ``shapes`` (the ideal then the
+    drawn shapes as a :class:`ShapeSet`) may be given if already made.
     """
     ideal = layer.shapes if isinstance(layer, Layer) else list(layer)
-    drawn = run_shapes(run, tool)
-    pl = plan(ideal, drawn, tol, pitch, max_pixels)
+    if drawn is None:
+        drawn = run_shapes(run, tool)
+    pl = plan(ideal, drawn, tol, pitch, max_pixels, clip=clip, shapes=shapes)
     if pl is None:
         p = pitch if pitch is not None else (
             next((q for q in PITCHES if q < tol), tol / 2))
         return Report(tol / 100, p / 100, 0, 0, 0, 0)
-    p, pad, shapes, n_ideal, tiles = pl.pitch, pl.pad, pl.shapes, pl.n_ideal, pl.tiles
+    p = pl.pitch
     counted = n_drawn = n_holes = n_excess = 0
+    differ: list[int] = []
+    done = 0
+    for batch in pl.batches():
+        on, inner, near = pl.flags(batch, tol)
+        holes = inner & ~on
+        excess = on & ~near
+        counted += int(pl.tile_pixels(batch).sum())
+        n_drawn += int(on.sum())
+        n_holes += int(holes.sum())
+        n_excess += int(excess.sum())
+        differ += batch[(holes | excess).any(axis=(1, 2))].tolist()
+        done += batch.size
+        if progress is not None:
+            progress(done, pl.keys.size)
+    # the worst places, from the tiles that differ, one at a time
     hole_c: list[tuple[float, ...]] = []
     exc_pts: list[tuple[float, float]] = []
-    for (tj, ti) in sorted(tiles):
+    for t in differ:
+        tj, ti = pl.where(t)
         tile = pl.tile(tj, ti)
-        counted += tile.pixels
-        members = tiles[(tj, ti)]
-        ideal_d = min_sdf([shapes[n] for n in members if n < n_ideal], tile, pad)
-        drawn_d = min_sdf([shapes[n] for n in members if n >= n_ideal], tile, p)
+        one = np.array([t])
+        ideal_d = pl.distances(one, True)[0][0, :tile.ny, :tile.nx]
+        drawn_d = pl.distances(one, False)[0][0, :tile.ny, :tile.nx]
         on = drawn_d <= 0
-        n_drawn += int(on.sum())
         holes = ~on & (ideal_d <= -tol)
         excess = on & (ideal_d > tol)
-        if holes.any() or excess.any():
-            x, y = tile.centres()
+        x, y = tile.centres()
         if holes.any():
-            n_holes += int(holes.sum())
             depth = -ideal_d[holes]
             for k in _top(depth, examples):
                 hole_c.append((x[holes][k], y[holes][k], depth[k], drawn_d[holes][k]))
         if excess.any():
-            n_excess += int(excess.sum())
             far = ideal_d[excess]
             for k in _top(far, examples):
                 exc_pts.append((x[excess][k], y[excess][k]))
@@ -348,13 +750,13 @@ def compare(run: Run, tool: float, layer: Layer | Sequence[AnyShape], tol: float
     if exc_pts:
         ex = np.array([q[0] for q in exc_pts])
         ey = np.array([q[1] for q in exc_pts])
-        dist = np.full(ex.shape, np.inf)
-        for s in ideal:
-            np.minimum(dist, s.sdf(ex, ey), out=dist)
+        dist, _ = pl.set.nearest(ex, ey, upto=pl.n_ideal)
         exc_c = [(float(a), float(b), float(c)) for a, b, c in zip(ex, ey, dist)]
+
     def mm(items: list[tuple[float, ...]]) -> list[tuple[float, ...]]:
         return [tuple(float(v) / 100 for v in t) for t in _spread(items, examples, 50.0)]
 
     return Report(tol_mm=tol / 100, pitch_mm=p / 100, pixels=counted, drawn=n_drawn,
                   holes=n_holes, excess=n_excess,
-                  worst_holes=mm(hole_c), worst_excess=mm(exc_c))
+                  worst_holes=mm(hole_c), worst_excess=mm(exc_c),
+                  differ=[pl.where(t) for t in differ])
