@@ -248,15 +248,17 @@ class ShapeSet:
     bbox: np.ndarray                       # (n, 4): x0, x1, y0, y1
     kind: np.ndarray                       # per item
     owner: np.ndarray                      # per item: shape index
-    par: np.ndarray                        # (items, 12) parameters
+    cols: np.ndarray                       # (12, items): parameter c of item i at [c, i]
     first: np.ndarray                      # per shape
     count: np.ndarray                      # per shape
+    ibox: np.ndarray                       # (items, 4): each item's own box
 
     @classmethod
     def of(cls, shapes: Sequence[AnyShape]) -> ShapeSet:
         kinds: list[int] = []
         owners: list[int] = []
         pars: list[tuple[float, ...]] = []
+        iboxes: list[Box] = []
         first = np.zeros(len(shapes), dtype=np.int64)
         count = np.zeros(len(shapes), dtype=np.int64)
         boxes = np.zeros((len(shapes), 4))
@@ -280,11 +282,14 @@ class ShapeSet:
                     kinds.append(_SEG)
                     pars.append((ax, ay, ex, ey, ee, s.r, 1.0 if lead else 0.0,
                                  pts[0][0], pts[0][1]))
+                    iboxes.append((min(ax, bx) - s.r, max(ax, bx) + s.r,
+                                   min(ay, by) - s.r, max(ay, by) + s.r))
                     owners.append(n)
                     lead = False
                 if lead:                    # no segment: a disc at the first point
                     kinds.append(_DISC)
                     pars.append((pts[0][0], pts[0][1], s.r))
+                    iboxes.append(s.bbox())
                 else:
                     count[n] = len(kinds) - first[n]
                     continue
@@ -296,11 +301,15 @@ class ShapeSet:
                              s.rad * math.cos(a1), s.rad * math.sin(a1)))
             else:
                 raise TypeError(f"not a shape: {s!r}")
+            if len(iboxes) < len(kinds):
+                iboxes.append(tuple(boxes[n]))
             owners.append(n)
             count[n] = len(kinds) - first[n]
         par = np.array([p + (0.0,) * (12 - len(p)) for p in pars]).reshape(-1, 12)
+        par = np.ascontiguousarray(par.T)
         return cls(len(shapes), boxes, np.asarray(kinds, dtype=np.int64),
-                   np.asarray(owners, dtype=np.int64), par, first, count)
+                   np.asarray(owners, dtype=np.int64), par, first, count,
+                   np.array(iboxes, dtype=float).reshape(-1, 4))
 
     def items_of(self, shapes: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
         """The items of the given shapes: (item indices, position in
@@ -314,50 +323,76 @@ class ShapeSet:
     def item_sdf(self, items: np.ndarray, x: np.ndarray, y: np.ndarray) -> np.ndarray:
         """Each item's term of its shape's signed distance at (x, y) (one
         point per item, same length)."""
-        out = np.empty(items.size)
         kind = self.kind[items]
-        for k in (_DISC, _RECT, _SEG, _ARC):
+        if not kind.size:
+            return np.zeros(0)
+        if kind.min() == kind.max():
+            return self._kind_sdf(int(kind[0]), items, x, y)
+        out = np.empty(items.size)
+        for k in np.unique(kind).tolist():
             sel = np.flatnonzero(kind == k)
-            if not sel.size:
-                continue
-            p = self.par[items[sel]]
-            xs, ys = x[sel], y[sel]
-            if k == _DISC:
-                d = np.hypot(xs - p[:, 0], ys - p[:, 1]) - p[:, 2]
-            elif k == _RECT:
-                qx = np.abs(xs - p[:, 0]) - p[:, 2]
-                qy = np.abs(ys - p[:, 1]) - p[:, 3]
-                outside = np.hypot(np.maximum(qx, 0.0), np.maximum(qy, 0.0))
-                inside = np.minimum(np.maximum(qx, qy), 0.0)
-                d = outside + inside - p[:, 4]
-            elif k == _SEG:
-                px, py = xs - p[:, 0], ys - p[:, 1]
-                ex, ey = p[:, 2], p[:, 3]
-                t = np.clip((px * ex + py * ey) / p[:, 4], 0.0, 1.0)
-                d = np.hypot(px - t * ex, py - t * ey)
-                lead = p[:, 6] != 0
-                if lead.any():
-                    d[lead] = np.minimum(np.hypot(xs[lead] - p[lead, 7], ys[lead] - p[lead, 8]),
-                                         d[lead])
-                d -= p[:, 5]
-            else:
-                rx, ry = xs - p[:, 0], ys - p[:, 1]
-                ring = np.abs(np.hypot(rx, ry) - p[:, 2])
-                d = ring
-                part = p[:, 6] == 0
-                if part.any():
-                    q = p[part]
-                    prx, pry = rx[part], ry[part]
-                    ang = np.arctan2(pry, prx)
-                    t = np.where(q[:, 4] >= 0, np.mod(ang - q[:, 3], TWO_PI),
-                                 np.mod(q[:, 3] - ang, TWO_PI))
-                    ends = np.minimum(np.hypot(prx - q[:, 7], pry - q[:, 8]),
-                                      np.hypot(prx - q[:, 9], pry - q[:, 10]))
-                    d = d.copy()
-                    d[part] = np.where(t <= np.abs(q[:, 4]), ring[part], ends)
-                d = d - p[:, 5]
-            out[sel] = d
+            out[sel] = self._kind_sdf(k, items[sel], x[sel], y[sel])
         return out
+
+    def _kind_sdf(self, k: int, items: np.ndarray, x: np.ndarray, y: np.ndarray
+                  ) -> np.ndarray:
+        """:meth:`item_sdf` of items all of kind ``k``: the formula of the
+        shape's ``sdf``, operation for operation."""
+        def col(c: int) -> np.ndarray:
+            return self.cols[c][items]
+
+        if k == _DISC:
+            d = np.hypot(x - col(0), y - col(1))
+            d -= col(2)
+            return d
+        if k == _RECT:
+            qx = np.abs(x - col(0))
+            qx -= col(2)
+            qy = np.abs(y - col(1))
+            qy -= col(3)
+            outside = np.hypot(np.maximum(qx, 0.0), np.maximum(qy, 0.0))
+            inside = np.minimum(np.maximum(qx, qy), 0.0)
+            outside += inside
+            outside -= col(4)
+            return outside
+        if k == _SEG:
+            px = x - col(0)
+            py = y - col(1)
+            ex, ey = col(2), col(3)
+            t = px * ex
+            t += py * ey
+            t /= col(4)
+            np.clip(t, 0.0, 1.0, out=t)
+            ex *= t
+            ey *= t
+            ex -= px
+            np.negative(ex, out=ex)                 # px - t * ex
+            ey -= py
+            np.negative(ey, out=ey)
+            d = np.hypot(ex, ey)
+            lead = self.cols[6][items] != 0
+            if lead.all():
+                np.minimum(np.hypot(px, py), d, out=d)
+            elif lead.any():
+                d[lead] = np.minimum(np.hypot(px[lead], py[lead]), d[lead])
+            d -= col(5)
+            return d
+        rx = x - col(0)
+        ry = y - col(1)
+        ring = np.abs(np.hypot(rx, ry) - col(2))
+        part = self.cols[6][items] == 0
+        if part.any():
+            q = items[part]
+            prx, pry = rx[part], ry[part]
+            a0, sweep = self.cols[3][q], self.cols[4][q]
+            ang = np.arctan2(pry, prx)
+            t = np.where(sweep >= 0, np.mod(ang - a0, TWO_PI), np.mod(a0 - ang, TWO_PI))
+            ends = np.minimum(np.hypot(prx - self.cols[7][q], pry - self.cols[8][q]),
+                              np.hypot(prx - self.cols[9][q], pry - self.cols[10][q]))
+            ring = ring.copy()
+            ring[part] = np.where(t <= np.abs(sweep), ring[part], ends)
+        ring -= col(5)
+        return ring
 
     def nearest(self, x: np.ndarray, y: np.ndarray, upto: int | None = None
                 ) -> tuple[np.ndarray, np.ndarray]:
@@ -534,14 +569,22 @@ class Plan:
         self._windows()
 
     def _windows(self) -> None:
-        """Every (tile, shape) row's window in the tile: j0, j1, i0, i1
-        (pixels of the tile), and its cost (pixels x items)."""
+        """Every (tile, item) entry's window in the tile: j0, j1, i0, i1
+        (pixels of the tile), and its pixels.  An item's window is its own
+        box grown by its shape's pad (a segment of a polyline: the
+        segment's box), so the shape's distance is exact where it is within
+        the pad, as with :func:`min_sdf`, and a long polyline costs its
+        length, not its box."""
         g, p = self.grid, self.pitch
         t = np.repeat(np.arange(self.keys.size), np.diff(self.start))
-        tj, ti = np.divmod(self.keys[t], self.ntx)
-        m = self.members
+        items, row = self.set.items_of(self.members)
+        self._entry_start = np.concatenate(([0], np.cumsum(self.set.count[self.members])))
+        self._item = items
+        et = t[row]
+        tj, ti = np.divmod(self.keys[et], self.ntx)
+        m = self.members[row]
         pad = np.where(m < self.n_ideal, self.pad, p)
-        b = self.set.bbox[m]
+        b = self.set.ibox[items]
         tx0 = g.x0 + (ti * TILE) * p
         ty0 = g.y0 + (tj * TILE) * p
         tnx = np.minimum(g.nx, (ti + 1) * TILE) - ti * TILE
@@ -554,9 +597,9 @@ class Plan:
         i1[empty] = i0[empty]
         j1[empty] = j0[empty]
         self._win = np.stack([j0, j1, i0, i1], axis=1)
-        self._cost = ((j1 - j0) * (i1 - i0) * self.set.count[m]).astype(float)
+        self._cost = ((j1 - j0) * (i1 - i0)).astype(float)
         self._tx0, self._ty0 = tx0, ty0
-        self._tile_cost = np.bincount(t, weights=self._cost, minlength=self.keys.size)
+        self._tile_cost = np.bincount(et, weights=self._cost, minlength=self.keys.size)
 
     def tile_pixels(self, t: np.ndarray) -> np.ndarray:
         """Pixels of each given tile."""
@@ -565,40 +608,53 @@ class Plan:
         return ((np.minimum(g.nx, (ti + 1) * TILE) - ti * TILE)
                 * (np.minimum(g.ny, (tj + 1) * TILE) - tj * TILE))
 
-    def pairs(self, batch: np.ndarray, ideal: bool) -> Iterator[tuple[np.ndarray, ...]]:
+    def pairs(self, batch: np.ndarray, ideal: bool, owners: bool = False
+              ) -> Iterator[tuple[np.ndarray, np.ndarray | None, np.ndarray]]:
         """The (pixel, shape) pairs of a batch of tiles, ideal or drawn
         shapes, in chunks of about :data:`PAIRS`: (flat pixel index into
-        a (len(batch), TILE, TILE) array, shape index, signed distance)."""
-        rows = np.concatenate([np.arange(self.start[t], self.start[t + 1]) for t in batch]) \
+        a (len(batch), TILE, TILE) array, shape index (if ``owners``, else
+        None), signed distance)."""
+        es = self._entry_start
+        lo, hi = es[self.start[batch]], es[self.start[batch + 1]]
+        ents = np.concatenate([np.arange(a, b) for a, b in zip(lo.tolist(), hi.tolist())]) \
             if batch.size else np.zeros(0, dtype=np.int64)
-        slot = np.repeat(np.arange(batch.size), np.diff(self.start)[batch])
-        m = self.members[rows]
-        keep = (m < self.n_ideal) if ideal else (m >= self.n_ideal)
-        keep &= self._cost[rows] > 0
-        rows, slot = rows[keep], slot[keep]
-        if not rows.size:
+        slot = np.repeat(np.arange(batch.size), hi - lo)
+        own = self.set.owner[self._item[ents]]
+        keep = ((own < self.n_ideal) if ideal else (own >= self.n_ideal)) & (self._cost[ents] > 0)
+        ents, slot = ents[keep], slot[keep]
+        if not ents.size:
             return
-        cost = np.cumsum(self._cost[rows])
-        cuts = np.searchsorted(cost, np.arange(PAIRS, cost[-1], PAIRS), side="right")
+        kind = self.set.kind[self._item[ents]]
+        order = np.argsort(kind, kind="stable")    # one kind a chunk, mostly
+        ents, slot, kind = ents[order], slot[order], kind[order]
+        cost = np.cumsum(self._cost[ents])
+        cuts = np.union1d(np.searchsorted(cost, np.arange(PAIRS, cost[-1], PAIRS), side="right"),
+                          np.flatnonzero(kind[1:] != kind[:-1]) + 1)
         p = self.pitch
-        for part_rows, part_slot in zip(np.split(rows, cuts), np.split(slot, cuts)):
-            if not part_rows.size:
+        for e, sl in zip(np.split(ents, cuts), np.split(slot, cuts)):
+            if not e.size:
                 continue
-            items, pos = self.set.items_of(self.members[part_rows])
-            r = part_rows[pos]
-            j0, j1, i0, i1 = self._win[r].T
+            j0, j1, i0, i1 = self._win[e].T.astype(np.int32)
             w = i1 - i0
             cnt = (j1 - j0) * w
-            rep = np.repeat(np.arange(items.size), cnt)
-            off = np.arange(rep.size) - np.repeat(np.cumsum(cnt) - cnt, cnt)
-            wr = w[rep]
-            lj = j0[rep] + off // wr
-            li = i0[rep] + off % wr
-            x = self._tx0[r][rep] + (li + 0.5) * p
-            y = self._ty0[r][rep] + (lj + 0.5) * p
-            d = self.set.item_sdf(items[rep], x, y)
-            pix = (part_slot[pos][rep] * TILE + lj) * TILE + li
-            yield pix, self.set.owner[items[rep]], d
+            rep = np.repeat(np.arange(e.size, dtype=np.int32), cnt)
+            off = np.arange(rep.size, dtype=np.int32)
+            off -= np.repeat((np.cumsum(cnt) - cnt).astype(np.int32), cnt)
+            lj, li = np.divmod(off, w[rep])
+            lj += j0[rep]
+            li += i0[rep]
+            x = (li + 0.5) * p
+            x += self._tx0[e][rep]
+            y = (lj + 0.5) * p
+            y += self._ty0[e][rep]
+            items = self._item[e][rep]
+            d = self.set.item_sdf(items, x, y)
+            pix = sl.astype(np.int32)[rep]
+            pix *= TILE
+            pix += lj
+            pix *= TILE
+            pix += li
+            yield pix, (self.set.owner[items] if owners else None), d
 
     def flags(self, batch: np.ndarray, tol: float
               ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
@@ -624,7 +680,7 @@ class Plan:
         where none): :func:`argmin_sdf` of each tile."""
         size = batch.size * TILE * TILE
         best = np.full(size, np.inf)
-        chunks = list(self.pairs(batch, ideal))
+        chunks = list(self.pairs(batch, ideal, owners=True))
         for pix, _, d in chunks:
             np.minimum.at(best, pix, d)
         which = np.full(size, np.iinfo(np.int64).max, dtype=np.int64)
