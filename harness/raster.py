@@ -1,13 +1,17 @@
 """Rasterised coverage: what a tape draws against what the deck asks for.
 
 Everything is sampled at pixel centres on a square grid (default pitch
-0.02 mm, i.e. 2 units of 0.01 mm), evaluated with numpy per shape inside
-the shape's own bounding-box window.  :func:`compare` works tile by tile
-(256 x 256 pixels) and only on tiles that some shape can reach, so memory
-stays small and the pixel budget (:data:`MAX_PIXELS`) counts only the
-pixels actually evaluated; the pitch grows (up to 0.04 mm, always below the
-tolerance) when a board needs it, and a board that still needs more pixels
-is refused with ValueError rather than swapping.
+0.02 mm, i.e. 2 units of 0.01 mm).  :func:`compare` works by tiles (256 x
+256 pixels), only on the tiles that some shape can reach (found for all
+shapes at once with numpy: a shape whose box lies in one tile is in that
+tile, a larger one in the tiles whose centre is near enough), a batch of
+tiles at a time, so memory is bounded by the batch, not the board.  The
+shapes are arrays (:class:`ShapeSet`): every (pixel, shape) pair of a batch
+is evaluated with one numpy call per kind of shape, the same formula as the
+shape's own ``sdf``.  The pixel budget (:data:`MAX_PIXELS`) only chooses the
+pitch: the finest of :data:`PITCHES` whose tiles fit in it, else the
+coarsest (0.04 mm, still below the tolerance); no board is refused for its
+size.  A caller may limit the check to a box (verify: the field).
 
 Decisions:
 
@@ -35,7 +39,7 @@ from .sim import Run
 #: Default pitch and the pitches tried for big boards, in units (0.01 mm).
 PITCH = 2.0
 PITCHES: tuple[float, ...] = (2.0, 3.0, 4.0)
-#: Most pixels evaluated by one rasterisation.
+#: Pixels evaluated at the finest pitch, at most; past it, a coarser pitch.
 MAX_PIXELS = 50_000_000
 #: Tile edge in pixels for :func:`compare`.
 TILE = 256

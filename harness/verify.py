@@ -35,7 +35,11 @@ the ideal to the tape frame that drew it:
   number, row, its text), with its area and how far it strays.
 
 Coordinates in messages are board coordinates in mm relative to the start
-point.  The output is deterministic.  Exit status of the command: 0 PASS,
+point.  The output is deterministic.  Coverage is checked on the field (and
+the deck's shapes) with :data:`FIELD_MARGIN` round; beyond it a tape's
+drawing is the reason ``field``.  The command prints progress lines on
+standard error when a run takes more than two seconds (:class:`Progress`),
+never on standard output.  Exit status of the command: 0 PASS,
 1 FAIL, 2 usage or I/O (or a deck the oracle cannot read).
 """
 
