@@ -7,6 +7,7 @@ pad boards are in the benchmarks, not here."""
 from __future__ import annotations
 
 import os
+import re
 import subprocess
 import sys
 from pathlib import Path
@@ -107,7 +108,12 @@ def test_progress_goes_to_standard_error_only(spread, tmp_path) -> None:
     assert proc.stdout == verify.verify(DECK, spread, deck_name=str(deck)).text()
     lines = proc.stderr.splitlines()
     assert lines and all(line.startswith("verify: ") for line in lines), proc.stderr
-    assert any(" tile " in line and " of " in line for line in lines), proc.stderr
+    # the first line comes at once; the next at most a second later (the
+    # tiles of a layer, when it takes that long)
+    assert lines[0] == "verify: small pads: reading SPREAD-small.ptp (0 s)", proc.stderr
+    assert all(re.fullmatch(r"verify: (small pads|large pads|conductors): (reading \S+|"
+                            r"(coverage|differences), tile \d+ of \d+) \(\d+ s\)", line)
+               for line in lines), proc.stderr
     quiet = subprocess.run([sys.executable, "-m", "harness", "verify", str(deck), str(spread)],
                            cwd=ROOT, capture_output=True, text=True, timeout=300,
                            env=dict(os.environ, VERIFY_PROGRESS_AFTER="1000"))
