@@ -75,7 +75,7 @@ fuzz: setup
 # SIMD groups each pass disables (numpy 2's names; the first test checks they
 # are off). The verdicts must be the same as on the machine's own best path.
 RASTER_TESTS := harness/tests/oracle/test_cpu_features.py harness/tests/oracle/test_raster.py \
-	harness/tests/oracle/test_verify.py harness/tests/tenzor/test_layers.py \
+	harness/tests/oracle/test_verify.py harness/tests/oracle/test_verify_large.py harness/tests/tenzor/test_layers.py \
 	harness/tests/em703/test_em703_gerber.py harness/tests/docs/test_readme_verify.py \
 	seeds/tests/test_seed001_dxf.py
 test-cpus: build

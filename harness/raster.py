@@ -1,13 +1,17 @@
 """Rasterised coverage: what a tape draws against what the deck asks for.
 
 Everything is sampled at pixel centres on a square grid (default pitch
-0.02 mm, i.e. 2 units of 0.01 mm), evaluated with numpy per shape inside
-the shape's own bounding-box window.  :func:`compare` works tile by tile
-(256 x 256 pixels) and only on tiles that some shape can reach, so memory
-stays small and the pixel budget (:data:`MAX_PIXELS`) counts only the
-pixels actually evaluated; the pitch grows (up to 0.04 mm, always below the
-tolerance) when a board needs it, and a board that still needs more pixels
-is refused with ValueError rather than swapping.
+0.02 mm, i.e. 2 units of 0.01 mm).  :func:`compare` works by tiles (256 x
+256 pixels), only on the tiles that some shape can reach (found for all
+shapes at once with numpy: a shape whose box lies in one tile is in that
+tile, a larger one in the tiles whose centre is near enough), a batch of
+tiles at a time, so memory is bounded by the batch, not the board.  The
+shapes are arrays (:class:`ShapeSet`): every (pixel, shape) pair of a batch
+is evaluated with one numpy call per kind of shape, the same formula as the
+shape's own ``sdf``.  The pixel budget (:data:`MAX_PIXELS`) only chooses the
+pitch: the finest of :data:`PITCHES` whose tiles fit in it, else the
+coarsest (0.04 mm, still below the tolerance); no board is refused for its
+size.  A caller may limit the check to a box (verify: the field).
 
 Decisions:
 
@@ -24,18 +28,18 @@ Decisions:
 from __future__ import annotations
 
 import math
-from collections.abc import Sequence
+from collections.abc import Callable, Iterator, Sequence
 from dataclasses import dataclass, field
 
 import numpy as np
 
-from .shapes import AnyShape, Layer, run_shapes
+from .shapes import TWO_PI, AnyShape, ArcBand, Disc, Layer, RoundRect, Stroke, run_shapes
 from .sim import Run
 
 #: Default pitch and the pitches tried for big boards, in units (0.01 mm).
 PITCH = 2.0
 PITCHES: tuple[float, ...] = (2.0, 3.0, 4.0)
-#: Most pixels evaluated by one rasterisation.
+#: Pixels evaluated at the finest pitch, at most; past it, a coarser pitch.
 MAX_PIXELS = 50_000_000
 #: Tile edge in pixels for :func:`compare`.
 TILE = 256
@@ -170,6 +174,8 @@ class Report:
     excess: int
     worst_holes: list[tuple[float, float, float, float]] = field(default_factory=list)
     worst_excess: list[tuple[float, float, float]] = field(default_factory=list)
+    #: The tiles (tile row, tile column) with a hole or excess pixel.
+    differ: list[tuple[int, int]] = field(default_factory=list, repr=False)
 
     @property
     def ok(self) -> bool:
@@ -192,31 +198,6 @@ class Report:
 
     def __str__(self) -> str:
         return self.summary()
-
-
-def _tiles(grid: Grid, shapes: Sequence[AnyShape], pad: float,
-           tiles: dict[tuple[int, int], list[int]], offset: int) -> None:
-    """Add shape indices (plus ``offset``) to the tiles they can reach."""
-    span = TILE * grid.pitch
-    half = span * math.sqrt(0.5)
-    for n, s in enumerate(shapes):
-        b = s.bbox()
-        ti0 = max(0, math.floor((b[0] - pad - grid.x0) / span))
-        ti1 = min(math.ceil(grid.nx / TILE) - 1, math.floor((b[1] + pad - grid.x0) / span))
-        tj0 = max(0, math.floor((b[2] - pad - grid.y0) / span))
-        tj1 = min(math.ceil(grid.ny / TILE) - 1, math.floor((b[3] + pad - grid.y0) / span))
-        if ti0 > ti1 or tj0 > tj1:
-            continue
-        # a few tile rows at a time, so that a huge shape (a 10 m circle
-        # has some 15 million tiles in its box) needs little memory
-        rows = max(1, _TILE_CHUNK // (ti1 - ti0 + 1))
-        for r0 in range(tj0, tj1 + 1, rows):
-            ti, tj = np.meshgrid(np.arange(ti0, ti1 + 1), np.arange(r0, min(tj1, r0 + rows - 1) + 1))
-            cx = grid.x0 + (ti + 0.5) * span
-            cy = grid.y0 + (tj + 0.5) * span
-            near = s.sdf(cx, cy) <= half + pad
-            for a, c in zip(tj[near].tolist(), ti[near].tolist()):
-                tiles.setdefault((a, c), []).append(n + offset)
 
 
 def _top(values: np.ndarray, k: int) -> np.ndarray:
@@ -245,21 +226,323 @@ def _spread(cands: list[tuple[float, ...]], k: int,
     return out
 
 
+# ---------------------------------------------------------------------------
+# The shapes as arrays: every shape's signed distance, many at once.
+# ---------------------------------------------------------------------------
+#: Kinds of item a shape is cut into for evaluation in bulk.
+_DISC, _RECT, _SEG, _ARC = range(4)
+#: Most (pixel, item) pairs evaluated at once.
+PAIRS = 1 << 20
+#: Most tiles held in one batch (boolean pass; a tenth of it with distances).
+BATCH_TILES = 64
+
+
+@dataclass
+class ShapeSet:
+    """Shapes as arrays, for evaluating many (point, shape) pairs with one
+    numpy call per kind.  Each shape is one or more *items*: a disc, a
+    rounded rectangle, a segment of a polyline (the first one also carries
+    the distance to the polyline's first point) or an arc band.  An item's
+    distance minus nothing is the shape's :meth:`sdf` formula term by term,
+    so that the minimum over a shape's items is the shape's own ``sdf``
+    bit for bit (``min(a, b) - r == min(a - r, b - r)`` in floating point).
+    ``first``/``count``: per shape, its first item and how many."""
+
+    n: int
+    bbox: np.ndarray                       # (n, 4): x0, x1, y0, y1
+    kind: np.ndarray                       # per item
+    owner: np.ndarray                      # per item: shape index
+    cols: np.ndarray                       # (12, items): parameter c of item i at [c, i]
+    first: np.ndarray                      # per shape
+    count: np.ndarray                      # per shape
+    ibox: np.ndarray                       # (items, 4): each item's own box
+
+    @classmethod
+    def of(cls, shapes: Sequence[AnyShape]) -> ShapeSet:
+        kinds: list[int] = []
+        owners: list[int] = []
+        pars: list[tuple[float, ...]] = []
+        iboxes: list[Box] = []
+        first = np.zeros(len(shapes), dtype=np.int64)
+        count = np.zeros(len(shapes), dtype=np.int64)
+        boxes = np.zeros((len(shapes), 4))
+        for n, s in enumerate(shapes):
+            first[n] = len(kinds)
+            boxes[n] = s.bbox()
+            if isinstance(s, Disc):
+                kinds.append(_DISC)
+                pars.append((s.cx, s.cy, s.r))
+            elif isinstance(s, RoundRect):
+                kinds.append(_RECT)
+                pars.append((s.cx, s.cy, s.w / 2 - s.rc, s.h / 2 - s.rc, s.rc))
+            elif isinstance(s, Stroke):
+                pts = s.points
+                lead = True
+                for (ax, ay), (bx, by) in zip(pts, pts[1:]):
+                    ex, ey = bx - ax, by - ay
+                    ee = ex * ex + ey * ey
+                    if ee == 0:
+                        continue
+                    kinds.append(_SEG)
+                    pars.append((ax, ay, ex, ey, ee, s.r, 1.0 if lead else 0.0,
+                                 pts[0][0], pts[0][1]))
+                    iboxes.append((min(ax, bx) - s.r, max(ax, bx) + s.r,
+                                   min(ay, by) - s.r, max(ay, by) + s.r))
+                    owners.append(n)
+                    lead = False
+                if lead:                    # no segment: a disc at the first point
+                    kinds.append(_DISC)
+                    pars.append((pts[0][0], pts[0][1], s.r))
+                    iboxes.append(s.bbox())
+                else:
+                    count[n] = len(kinds) - first[n]
+                    continue
+            elif isinstance(s, ArcBand):
+                a1 = s.a0 + s.sweep
+                kinds.append(_ARC)
+                pars.append((s.cx, s.cy, s.rad, s.a0, s.sweep, s.hw, 1.0 if s.full else 0.0,
+                             s.rad * math.cos(s.a0), s.rad * math.sin(s.a0),
+                             s.rad * math.cos(a1), s.rad * math.sin(a1)))
+            else:
+                raise TypeError(f"not a shape: {s!r}")
+            if len(iboxes) < len(kinds):
+                iboxes.append(tuple(boxes[n]))
+            owners.append(n)
+            count[n] = len(kinds) - first[n]
+        par = np.array([p + (0.0,) * (12 - len(p)) for p in pars]).reshape(-1, 12)
+        par = np.ascontiguousarray(par.T)
+        return cls(len(shapes), boxes, np.asarray(kinds, dtype=np.int64),
+                   np.asarray(owners, dtype=np.int64), par, first, count,
+                   np.array(iboxes, dtype=float).reshape(-1, 4))
+
+    def items_of(self, shapes: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """The items of the given shapes: (item indices, position in
+        ``shapes`` of each item's shape)."""
+        cnt = self.count[shapes]
+        pos = np.repeat(np.arange(shapes.size), cnt)
+        start = np.repeat(np.cumsum(cnt) - cnt, cnt)
+        items = self.first[shapes][pos] + np.arange(pos.size) - start
+        return items, pos
+
+    def item_sdf(self, items: np.ndarray, x: np.ndarray, y: np.ndarray) -> np.ndarray:
+        """Each item's term of its shape's signed distance at (x, y) (one
+        point per item, same length)."""
+        kind = self.kind[items]
+        if not kind.size:
+            return np.zeros(0)
+        if kind.min() == kind.max():
+            return self._kind_sdf(int(kind[0]), items, x, y)
+        out = np.empty(items.size)
+        for k in np.unique(kind).tolist():
+            sel = np.flatnonzero(kind == k)
+            out[sel] = self._kind_sdf(k, items[sel], x[sel], y[sel])
+        return out
+
+    def _kind_sdf(self, k: int, items: np.ndarray, x: np.ndarray, y: np.ndarray
+                  ) -> np.ndarray:
+        """:meth:`item_sdf` of items all of kind ``k``: the formula of the
+        shape's ``sdf``, operation for operation."""
+        def col(c: int) -> np.ndarray:
+            return self.cols[c][items]
+
+        if k == _DISC:
+            d = np.hypot(x - col(0), y - col(1))
+            d -= col(2)
+            return d
+        if k == _RECT:
+            qx = np.abs(x - col(0))
+            qx -= col(2)
+            qy = np.abs(y - col(1))
+            qy -= col(3)
+            outside = np.hypot(np.maximum(qx, 0.0), np.maximum(qy, 0.0))
+            inside = np.minimum(np.maximum(qx, qy), 0.0)
+            outside += inside
+            outside -= col(4)
+            return outside
+        if k == _SEG:
+            px = x - col(0)
+            py = y - col(1)
+            ex, ey = col(2), col(3)
+            t = px * ex
+            t += py * ey
+            t /= col(4)
+            np.clip(t, 0.0, 1.0, out=t)
+            ex *= t
+            ey *= t
+            ex -= px
+            np.negative(ex, out=ex)                 # px - t * ex
+            ey -= py
+            np.negative(ey, out=ey)
+            d = np.hypot(ex, ey)
+            lead = self.cols[6][items] != 0
+            if lead.all():
+                np.minimum(np.hypot(px, py), d, out=d)
+            elif lead.any():
+                d[lead] = np.minimum(np.hypot(px[lead], py[lead]), d[lead])
+            d -= col(5)
+            return d
+        rx = x - col(0)
+        ry = y - col(1)
+        ring = np.abs(np.hypot(rx, ry) - col(2))
+        part = self.cols[6][items] == 0
+        if part.any():
+            q = items[part]
+            prx, pry = rx[part], ry[part]
+            a0, sweep = self.cols[3][q], self.cols[4][q]
+            ang = np.arctan2(pry, prx)
+            t = np.where(sweep >= 0, np.mod(ang - a0, TWO_PI), np.mod(a0 - ang, TWO_PI))
+            ends = np.minimum(np.hypot(prx - self.cols[7][q], pry - self.cols[8][q]),
+                              np.hypot(prx - self.cols[9][q], pry - self.cols[10][q]))
+            ring = ring.copy()
+            ring[part] = np.where(t <= np.abs(sweep), ring[part], ends)
+        ring -= col(5)
+        return ring
+
+    def nearest(self, x: np.ndarray, y: np.ndarray, upto: int | None = None
+                ) -> tuple[np.ndarray, np.ndarray]:
+        """At each point, the least signed distance of the shapes (the first
+        ``upto`` of them, if given) and which shape has it (the first on
+        ties; -1 and inf when there are none)."""
+        x = np.asarray(x, dtype=float)
+        y = np.asarray(y, dtype=float)
+        best = np.full(x.size, np.inf)
+        which = np.full(x.size, -1, dtype=np.int64)
+        n = self.n if upto is None else upto
+        items = np.arange(self.first[n] if n < self.n else self.kind.size)
+        step = max(1, PAIRS // max(1, items.size))
+        for a in range(0, x.size, step):
+            m = min(x.size, a + step) - a
+            pt = np.repeat(np.arange(m), items.size)
+            it = np.tile(items, m)
+            d = self.item_sdf(it, x[a:a + m][pt], y[a:a + m][pt])
+            per = np.full((m, n), np.inf)
+            np.minimum.at(per, (pt, self.owner[it]), d)
+            k = np.argmin(per, axis=1) if n else np.zeros(m, dtype=np.int64)
+            if n:
+                best[a:a + m] = per[np.arange(m), k]
+                which[a:a + m] = np.where(np.isfinite(best[a:a + m]), k, -1)
+        return best, which
+# ---------------------------------------------------------------------------
+# Tiles: which shapes reach which tile, and evaluating many tiles at once.
+# ---------------------------------------------------------------------------
+def _memberships(grid: Grid, ss: ShapeSet, pads: np.ndarray,
+                 clip: tuple[int, int, int, int] | None) -> tuple[np.ndarray, np.ndarray]:
+    """(tile key, shape) of every tile each shape can reach: the tiles whose
+    centre lies within the tile's half diagonal plus the shape's pad of the
+    shape (a shape whose box grown by its pad lies in one tile: that tile).
+    Tile key = tile row * tile columns + tile column.  ``clip``: the tile
+    ranges (ti0, ti1, tj0, tj1) kept, None for all."""
+    span = TILE * grid.pitch
+    half = span * math.sqrt(0.5)
+    ntx, nty = math.ceil(grid.nx / TILE), math.ceil(grid.ny / TILE)
+    b = ss.bbox
+    ti0 = np.maximum(0, np.floor((b[:, 0] - pads - grid.x0) / span)).astype(np.int64)
+    ti1 = np.minimum(ntx - 1, np.floor((b[:, 1] + pads - grid.x0) / span)).astype(np.int64)
+    tj0 = np.maximum(0, np.floor((b[:, 2] - pads - grid.y0) / span)).astype(np.int64)
+    tj1 = np.minimum(nty - 1, np.floor((b[:, 3] + pads - grid.y0) / span)).astype(np.int64)
+    ok = (ti0 <= ti1) & (tj0 <= tj1)
+    one = ok & (ti0 == ti1) & (tj0 == tj1)
+    keys = [tj0[one] * ntx + ti0[one]]
+    owners = [np.flatnonzero(one)]
+    if clip is not None:
+        ti0, ti1 = np.maximum(ti0, clip[0]), np.minimum(ti1, clip[1])
+        tj0, tj1 = np.maximum(tj0, clip[2]), np.minimum(tj1, clip[3])
+    multi = np.flatnonzero(ok & ~one & (ti0 <= ti1) & (tj0 <= tj1))
+    wide = ti1[multi] - ti0[multi] + 1
+    tiles = wide * (tj1[multi] - tj0[multi] + 1) * ss.count[multi]
+    huge = tiles > PAIRS
+    for n in multi[huge].tolist():        # one huge shape: a few tile rows at a time
+        keys_n = _shape_tiles(grid, ss, n, int(ti0[n]), int(ti1[n]), int(tj0[n]), int(tj1[n]),
+                              half + float(pads[n]))
+        keys.append(keys_n)
+        owners.append(np.full(keys_n.size, n, dtype=np.int64))
+    small, cost = multi[~huge], tiles[~huge]
+    bounds = np.flatnonzero(np.diff(np.cumsum(cost) // PAIRS)) + 1
+    for sel in np.split(small, bounds):    # the others, a few at a time
+        if not sel.size:
+            continue
+        items, pos = ss.items_of(sel)
+        n_of = sel[pos]
+        w = (ti1 - ti0 + 1)[n_of]
+        cnt = w * (tj1 - tj0 + 1)[n_of]
+        rep = np.repeat(np.arange(items.size), cnt)
+        off = np.arange(rep.size) - np.repeat(np.cumsum(cnt) - cnt, cnt)
+        ti = ti0[n_of][rep] + off % w[rep]
+        tj = tj0[n_of][rep] + off // w[rep]
+        cx = grid.x0 + (ti + 0.5) * span
+        cy = grid.y0 + (tj + 0.5) * span
+        near = ss.item_sdf(items[rep], cx, cy) <= half + pads[n_of][rep]
+        keys.append(tj[near] * ntx + ti[near])
+        owners.append(n_of[rep][near])
+    key = np.concatenate(keys)
+    own = np.concatenate(owners)
+    if clip is not None:
+        ti, tj = key % ntx, key // ntx
+        keep = (ti >= clip[0]) & (ti <= clip[1]) & (tj >= clip[2]) & (tj <= clip[3])
+        key, own = key[keep], own[keep]
+    # one row per (tile, shape), in tile order, then shape order
+    order = np.lexsort((own, key))
+    key, own = key[order], own[order]
+    first = np.ones(key.size, dtype=bool)
+    first[1:] = (key[1:] != key[:-1]) | (own[1:] != own[:-1])
+    return key[first], own[first]
+
+
+def _shape_tiles(grid: Grid, ss: ShapeSet, n: int, ti0: int, ti1: int, tj0: int, tj1: int,
+                 reach: float) -> np.ndarray:
+    """The tile keys of one huge shape, a few tile rows at a time."""
+    span = TILE * grid.pitch
+    ntx = math.ceil(grid.nx / TILE)
+    its = np.arange(ss.first[n], ss.first[n] + ss.count[n])
+    rows = max(1, PAIRS // ((ti1 - ti0 + 1) * its.size))
+    out = []
+    for r0 in range(tj0, tj1 + 1, rows):
+        tj, ti = np.meshgrid(np.arange(r0, min(tj1, r0 + rows - 1) + 1), np.arange(ti0, ti1 + 1),
+                             indexing="ij")
+        tj, ti = tj.ravel(), ti.ravel()
+        m = tj.size
+        it = np.tile(its, m)
+        at = np.repeat(np.arange(m), its.size)
+        d = ss.item_sdf(it, grid.x0 + (ti[at] + 0.5) * span, grid.y0 + (tj[at] + 0.5) * span)
+        near = np.zeros(m, dtype=bool)
+        near[at[d <= reach]] = True
+        out.append(tj[near] * ntx + ti[near])
+    return np.concatenate(out) if out else np.zeros(0, dtype=np.int64)
+
+
 @dataclass
 class Plan:
     """The tiles :func:`compare` evaluates: ``shapes`` is the ideal shapes
-    then the drawn ones (``n_ideal`` of the first kind); ``tiles`` maps
-    (tile row, tile column) to the indices into ``shapes`` that may reach
-    the tile; ideal shapes are evaluated with window margin ``pad``, drawn
-    ones with ``pitch``."""
+    then the drawn ones (``n_ideal`` of the first kind); ``keys`` the tiles
+    (tile row * ``ntx`` + tile column, ascending), and the shapes that may
+    reach tile ``keys[t]`` are ``members[start[t]:start[t + 1]]`` (indices
+    into ``shapes``, ascending); ideal shapes are evaluated with window
+    margin ``pad``, drawn ones with ``pitch``."""
 
     grid: Grid
     pitch: float
     pad: float
     shapes: list[AnyShape]
     n_ideal: int
-    tiles: dict[tuple[int, int], list[int]]
+    keys: np.ndarray
+    start: np.ndarray
+    members: np.ndarray
     pixels: int
+    set: ShapeSet
+
+    @property
+    def ntx(self) -> int:
+        return math.ceil(self.grid.nx / TILE)
+
+    def where(self, t: int) -> tuple[int, int]:
+        """(tile row, tile column) of the t-th tile."""
+        return divmod(int(self.keys[t]), self.ntx)
+
+    @property
+    def tiles(self) -> dict[tuple[int, int], list[int]]:
+        """The tiles as a dict (tile row, tile column) -> shape indices."""
+        return {self.where(t): self.members[self.start[t]:self.start[t + 1]].tolist()
+                for t in range(self.keys.size)}
 
     def tile(self, tj: int, ti: int) -> Grid:
         """The grid of one tile."""
@@ -267,80 +550,259 @@ class Plan:
         is_ = slice(ti * TILE, min(self.grid.nx, (ti + 1) * TILE))
         return self.grid.sub(js, is_)
 
+    def batches(self, tiles: np.ndarray | None = None, limit: int = BATCH_TILES
+                ) -> Iterator[np.ndarray]:
+        """The given tile numbers (default all), in order, cut into batches
+        of at most ``limit`` tiles and about :data:`PAIRS` pairs."""
+        ts = np.arange(self.keys.size) if tiles is None else np.asarray(tiles, dtype=np.int64)
+        if not ts.size:
+            return
+        cost = self._tile_cost[ts]
+        acc = 0.0
+        cur: list[int] = []
+        for t, c in zip(ts.tolist(), cost.tolist()):
+            if cur and (len(cur) >= limit or acc + c > 4 * PAIRS):
+                yield np.asarray(cur, dtype=np.int64)
+                cur, acc = [], 0.0
+            cur.append(t)
+            acc += c
+        if cur:
+            yield np.asarray(cur, dtype=np.int64)
+
+    def __post_init__(self) -> None:
+        self._windows()
+
+    def _windows(self) -> None:
+        """Every (tile, item) entry's window in the tile: j0, j1, i0, i1
+        (pixels of the tile), and its pixels.  An item's window is its own
+        box grown by its shape's pad (a segment of a polyline: the
+        segment's box), so the shape's distance is exact where it is within
+        the pad, as with :func:`min_sdf`, and a long polyline costs its
+        length, not its box."""
+        g, p = self.grid, self.pitch
+        t = np.repeat(np.arange(self.keys.size), np.diff(self.start))
+        items, row = self.set.items_of(self.members)
+        self._entry_start = np.concatenate(([0], np.cumsum(self.set.count[self.members])))
+        self._item = items
+        et = t[row]
+        tj, ti = np.divmod(self.keys[et], self.ntx)
+        m = self.members[row]
+        pad = np.where(m < self.n_ideal, self.pad, p)
+        b = self.set.ibox[items]
+        tx0 = g.x0 + (ti * TILE) * p
+        ty0 = g.y0 + (tj * TILE) * p
+        tnx = np.minimum(g.nx, (ti + 1) * TILE) - ti * TILE
+        tny = np.minimum(g.ny, (tj + 1) * TILE) - tj * TILE
+        i0 = np.maximum(0, np.floor((b[:, 0] - pad - tx0) / p - 0.5)).astype(np.int64)
+        i1 = np.minimum(tnx, np.ceil((b[:, 1] + pad - tx0) / p + 0.5)).astype(np.int64)
+        j0 = np.maximum(0, np.floor((b[:, 2] - pad - ty0) / p - 0.5)).astype(np.int64)
+        j1 = np.minimum(tny, np.ceil((b[:, 3] + pad - ty0) / p + 0.5)).astype(np.int64)
+        empty = (i0 >= i1) | (j0 >= j1)
+        i1[empty] = i0[empty]
+        j1[empty] = j0[empty]
+        self._win = np.stack([j0, j1, i0, i1], axis=1)
+        self._cost = ((j1 - j0) * (i1 - i0)).astype(float)
+        self._tx0, self._ty0 = tx0, ty0
+        self._tile_cost = np.bincount(et, weights=self._cost, minlength=self.keys.size)
+
+    def tile_pixels(self, t: np.ndarray) -> np.ndarray:
+        """Pixels of each given tile."""
+        tj, ti = np.divmod(self.keys[t], self.ntx)
+        g = self.grid
+        return ((np.minimum(g.nx, (ti + 1) * TILE) - ti * TILE)
+                * (np.minimum(g.ny, (tj + 1) * TILE) - tj * TILE))
+
+    def pairs(self, batch: np.ndarray, ideal: bool, owners: bool = False
+              ) -> Iterator[tuple[np.ndarray, np.ndarray | None, np.ndarray]]:
+        """The (pixel, shape) pairs of a batch of tiles, ideal or drawn
+        shapes, in chunks of about :data:`PAIRS`: (flat pixel index into
+        a (len(batch), TILE, TILE) array, shape index (if ``owners``, else
+        None), signed distance)."""
+        es = self._entry_start
+        lo, hi = es[self.start[batch]], es[self.start[batch + 1]]
+        ents = np.concatenate([np.arange(a, b) for a, b in zip(lo.tolist(), hi.tolist())]) \
+            if batch.size else np.zeros(0, dtype=np.int64)
+        slot = np.repeat(np.arange(batch.size), hi - lo)
+        own = self.set.owner[self._item[ents]]
+        keep = ((own < self.n_ideal) if ideal else (own >= self.n_ideal)) & (self._cost[ents] > 0)
+        ents, slot = ents[keep], slot[keep]
+        if not ents.size:
+            return
+        kind = self.set.kind[self._item[ents]]
+        order = np.argsort(kind, kind="stable")    # one kind a chunk, mostly
+        ents, slot, kind = ents[order], slot[order], kind[order]
+        cost = np.cumsum(self._cost[ents])
+        cuts = np.union1d(np.searchsorted(cost, np.arange(PAIRS, cost[-1], PAIRS), side="right"),
+                          np.flatnonzero(kind[1:] != kind[:-1]) + 1)
+        p = self.pitch
+        for e, sl in zip(np.split(ents, cuts), np.split(slot, cuts)):
+            if not e.size:
+                continue
+            j0, j1, i0, i1 = self._win[e].T.astype(np.int32)
+            w = i1 - i0
+            cnt = (j1 - j0) * w
+            rep = np.repeat(np.arange(e.size, dtype=np.int32), cnt)
+            off = np.arange(rep.size, dtype=np.int32)
+            off -= np.repeat((np.cumsum(cnt) - cnt).astype(np.int32), cnt)
+            lj, li = np.divmod(off, w[rep])
+            lj += j0[rep]
+            li += i0[rep]
+            x = (li + 0.5) * p
+            x += self._tx0[e][rep]
+            y = (lj + 0.5) * p
+            y += self._ty0[e][rep]
+            items = self._item[e][rep]
+            d = self.set.item_sdf(items, x, y)
+            pix = sl.astype(np.int32)[rep]
+            pix *= TILE
+            pix += lj
+            pix *= TILE
+            pix += li
+            yield pix, (self.set.owner[items] if owners else None), d
+
+    def flags(self, batch: np.ndarray, tol: float
+              ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """Booleans of a batch, (len(batch), TILE, TILE): drawn (a drawn
+        shape at distance <= 0), inside the ideal shrunk by ``tol``, inside
+        the ideal grown by ``tol``."""
+        size = batch.size * TILE * TILE
+        on = np.zeros(size, dtype=bool)
+        inner = np.zeros(size, dtype=bool)
+        near = np.zeros(size, dtype=bool)
+        for pix, _, d in self.pairs(batch, False):
+            on[pix[d <= 0]] = True
+        for pix, _, d in self.pairs(batch, True):
+            inner[pix[d <= -tol]] = True
+            near[pix[d <= tol]] = True
+        shape = (batch.size, TILE, TILE)
+        return on.reshape(shape), inner.reshape(shape), near.reshape(shape)
+
+    def distances(self, batch: np.ndarray, ideal: bool) -> tuple[np.ndarray, np.ndarray]:
+        """Least signed distance of the batch's ideal (or drawn) shapes at
+        every pixel, (len(batch), TILE, TILE), +inf where none reaches, and
+        which shape has it (index into ``shapes``; the first on ties, -1
+        where none): :func:`argmin_sdf` of each tile."""
+        size = batch.size * TILE * TILE
+        best = np.full(size, np.inf)
+        chunks = list(self.pairs(batch, ideal, owners=True))
+        for pix, _, d in chunks:
+            np.minimum.at(best, pix, d)
+        which = np.full(size, np.iinfo(np.int64).max, dtype=np.int64)
+        for pix, own, d in chunks:
+            eq = d == best[pix]
+            np.minimum.at(which, pix[eq], own[eq])
+        which[which == np.iinfo(np.int64).max] = -1
+        shape = (batch.size, TILE, TILE)
+        return best.reshape(shape), which.reshape(shape)
+
+
+def clip_tiles(grid: Grid, clip: Box | None) -> tuple[int, int, int, int] | None:
+    """The tile ranges (ti0, ti1, tj0, tj1) that meet the box ``clip``."""
+    if clip is None:
+        return None
+    span = TILE * grid.pitch
+    return (math.floor((clip[0] - grid.x0) / span), math.floor((clip[1] - grid.x0) / span),
+            math.floor((clip[2] - grid.y0) / span), math.floor((clip[3] - grid.y0) / span))
+
 
 def plan(ideal: Sequence[AnyShape], drawn: Sequence[AnyShape], tol: float,
          pitch: float | None = None, max_pixels: int = MAX_PIXELS,
-         reach: float = 0.0) -> Plan | None:
+         reach: float = 0.0, clip: Box | None = None,
+         shapes: ShapeSet | None = None) -> Plan | None:
     """Choose the pitch (the first of :data:`PITCHES` below ``tol`` that
-    keeps the evaluated pixels within ``max_pixels``) and the tiles for
-    comparing ``drawn`` with ``ideal`` at tolerance ``tol``; None when both
-    are empty.  ValueError when no pitch is small enough.  Ideal shapes are
-    evaluated up to ``tol`` + pitch + ``reach`` outside themselves (more
-    ``reach`` tells how far excess lies from the nearest shape)."""
+    keeps the evaluated pixels within ``max_pixels``, else the coarsest)
+    and the tiles for comparing ``drawn`` with ``ideal`` at tolerance
+    ``tol``; None when both are empty.  Ideal shapes are evaluated up to
+    ``tol`` + pitch + ``reach`` outside themselves (more ``reach`` tells
+    how far excess lies from the nearest shape).  Only the tiles that meet
+    the box ``clip`` (units) are kept, when given.  ``shapes``: the ideal
+    then the drawn shapes as a :class:`ShapeSet`, if already made."""
     if pitch is not None:
         candidates: tuple[float, ...] = (pitch,)
     else:
         candidates = tuple(p for p in PITCHES if p < tol) or (tol / 2,)
     if any(p >= tol for p in candidates):
         raise ValueError(f"pitch {candidates[0]} must be smaller than tolerance {tol}")
-    box = union_box([s.bbox() for s in ideal] + [s.bbox() for s in drawn])
-    if box is None:
+    all_shapes = list(ideal) + list(drawn)
+    if not all_shapes:
         return None
+    ss = shapes if shapes is not None else ShapeSet.of(all_shapes)
+    b = ss.bbox
+    box = (float(b[:, 0].min()), float(b[:, 1].max()), float(b[:, 2].min()),
+           float(b[:, 3].max()))
+    n_ideal = len(ideal)
     for p in candidates:
         grid = make_grid(box, p, tol + 2 * p, max_pixels=10**15)
         pad = tol + p + reach
-        tiles: dict[tuple[int, int], list[int]] = {}
-        _tiles(grid, ideal, pad, tiles, 0)
-        _tiles(grid, drawn, p, tiles, len(ideal))
-        pixels = sum((min(grid.nx, (ti + 1) * TILE) - ti * TILE)
-                     * (min(grid.ny, (tj + 1) * TILE) - tj * TILE) for tj, ti in tiles)
-        if pixels <= max_pixels:
+        pads = np.where(np.arange(ss.n) < n_ideal, pad, p)
+        keys, own = _memberships(grid, ss, pads, clip_tiles(grid, clip))
+        tkeys, start = np.unique(keys, return_index=True)
+        start = np.append(start, keys.size)
+        pl = Plan(grid, p, pad, all_shapes, n_ideal, tkeys, start, own, 0, ss)
+        pl.pixels = int(pl.tile_pixels(np.arange(tkeys.size)).sum())
+        if pl.pixels <= max_pixels:
             break
-    else:
-        raise ValueError(f"coverage check needs about {pixels} pixels even at "
-                         f"{candidates[-1] / 100:.2f} mm pitch (limit {max_pixels})")
-    return Plan(grid, p, pad, list(ideal) + list(drawn), len(ideal), tiles, pixels)
+    return pl
 
 
 def compare(run: Run, tool: float, layer: Layer | Sequence[AnyShape], tol: float = 5,
             pitch: float | None = None, max_pixels: int = MAX_PIXELS,
-            examples: int = 5) -> Report:
+            examples: int = 5, clip: Box | None = None,
+            progress: Callable[[int, int], None] | None = None,
+            drawn: Sequence[AnyShape] | None = None,
+            shapes: ShapeSet | None = None) -> Report:
     """Compare what ``run`` draws with ``tool`` (units) against the ideal
     ``layer`` at tolerance ``tol`` (units).
 
     holes = pixels of the ideal shrunk by ``tol`` that are not drawn;
-    excess = drawn pixels outside the ideal grown by ``tol``.
+    excess = drawn pixels outside the ideal grown by ``tol``.  Only the
+    tiles meeting the box ``clip`` are looked at, when given.  ``progress``
+    is told (tiles done, tiles) after each batch of tiles.  ``drawn``
+    (:func:`run_shapes` of the run) and ``shapes`` (the ideal then the
+    drawn shapes as a :class:`ShapeSet`) may be given if already made.
     """
     ideal = layer.shapes if isinstance(layer, Layer) else list(layer)
-    drawn = run_shapes(run, tool)
-    pl = plan(ideal, drawn, tol, pitch, max_pixels)
+    if drawn is None:
+        drawn = run_shapes(run, tool)
+    pl = plan(ideal, drawn, tol, pitch, max_pixels, clip=clip, shapes=shapes)
     if pl is None:
         p = pitch if pitch is not None else (
             next((q for q in PITCHES if q < tol), tol / 2))
         return Report(tol / 100, p / 100, 0, 0, 0, 0)
-    p, pad, shapes, n_ideal, tiles = pl.pitch, pl.pad, pl.shapes, pl.n_ideal, pl.tiles
+    p = pl.pitch
     counted = n_drawn = n_holes = n_excess = 0
+    differ: list[int] = []
+    done = 0
+    for batch in pl.batches():
+        on, inner, near = pl.flags(batch, tol)
+        holes = inner & ~on
+        excess = on & ~near
+        counted += int(pl.tile_pixels(batch).sum())
+        n_drawn += int(on.sum())
+        n_holes += int(holes.sum())
+        n_excess += int(excess.sum())
+        differ += batch[(holes | excess).any(axis=(1, 2))].tolist()
+        done += batch.size
+        if progress is not None:
+            progress(done, pl.keys.size)
+    # the worst places, from the tiles that differ, one at a time
     hole_c: list[tuple[float, ...]] = []
     exc_pts: list[tuple[float, float]] = []
-    for (tj, ti) in sorted(tiles):
+    for t in differ:
+        tj, ti = pl.where(t)
         tile = pl.tile(tj, ti)
-        counted += tile.pixels
-        members = tiles[(tj, ti)]
-        ideal_d = min_sdf([shapes[n] for n in members if n < n_ideal], tile, pad)
-        drawn_d = min_sdf([shapes[n] for n in members if n >= n_ideal], tile, p)
+        one = np.array([t])
+        ideal_d = pl.distances(one, True)[0][0, :tile.ny, :tile.nx]
+        drawn_d = pl.distances(one, False)[0][0, :tile.ny, :tile.nx]
         on = drawn_d <= 0
-        n_drawn += int(on.sum())
         holes = ~on & (ideal_d <= -tol)
         excess = on & (ideal_d > tol)
-        if holes.any() or excess.any():
-            x, y = tile.centres()
+        x, y = tile.centres()
         if holes.any():
-            n_holes += int(holes.sum())
             depth = -ideal_d[holes]
             for k in _top(depth, examples):
                 hole_c.append((x[holes][k], y[holes][k], depth[k], drawn_d[holes][k]))
         if excess.any():
-            n_excess += int(excess.sum())
             far = ideal_d[excess]
             for k in _top(far, examples):
                 exc_pts.append((x[excess][k], y[excess][k]))
@@ -348,13 +810,13 @@ def compare(run: Run, tool: float, layer: Layer | Sequence[AnyShape], tol: float
     if exc_pts:
         ex = np.array([q[0] for q in exc_pts])
         ey = np.array([q[1] for q in exc_pts])
-        dist = np.full(ex.shape, np.inf)
-        for s in ideal:
-            np.minimum(dist, s.sdf(ex, ey), out=dist)
+        dist, _ = pl.set.nearest(ex, ey, upto=pl.n_ideal)
         exc_c = [(float(a), float(b), float(c)) for a, b, c in zip(ex, ey, dist)]
+
     def mm(items: list[tuple[float, ...]]) -> list[tuple[float, ...]]:
         return [tuple(float(v) / 100 for v in t) for t in _spread(items, examples, 50.0)]
 
     return Report(tol_mm=tol / 100, pitch_mm=p / 100, pixels=counted, drawn=n_drawn,
                   holes=n_holes, excess=n_excess,
-                  worst_holes=mm(hole_c), worst_excess=mm(exc_c))
+                  worst_holes=mm(hole_c), worst_excess=mm(exc_c),
+                  differ=[pl.where(t) for t in differ])

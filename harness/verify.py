@@ -35,7 +35,11 @@ the ideal to the tape frame that drew it:
   number, row, its text), with its area and how far it strays.
 
 Coordinates in messages are board coordinates in mm relative to the start
-point.  The output is deterministic.  Exit status of the command: 0 PASS,
+point.  The output is deterministic.  Coverage is checked on the field (and
+the deck's shapes) with :data:`FIELD_MARGIN` round; beyond it a tape's
+drawing is the reason ``field``.  The command prints progress lines on
+standard error when a run takes more than two seconds (:class:`Progress`),
+never on standard output.  Exit status of the command: 0 PASS,
 1 FAIL, 2 usage or I/O (or a deck the oracle cannot read).
 """
 
@@ -44,7 +48,9 @@ from __future__ import annotations
 import hashlib
 import math
 import sys
-from collections.abc import Sequence
+import os
+import time
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field
 from fractions import Fraction
 from pathlib import Path
@@ -368,58 +374,65 @@ def _bincount(keys: np.ndarray, n: int) -> np.ndarray:
     return np.bincount(keys, minlength=n)[:n] if keys.size else np.zeros(n, dtype=np.int64)
 
 
-def _scan(pl: raster.Plan, tol: float, stroke_frame: Sequence[int], bins: int
+def _scan(pl: raster.Plan, tol: float, stroke_frame: Sequence[int], bins: int,
+          tiles: np.ndarray, progress: Callable[[int, int], None] | None = None
           ) -> tuple[_ShapeStats, _Excess]:
-    """One pass over the tiles of ``pl``: per-shape statistics, and the
-    excess pixels."""
+    """One pass over the given tiles of ``pl`` (tile numbers): per-shape
+    statistics, and the excess pixels."""
     n_ideal = pl.n_ideal
     st = _ShapeStats(n_ideal, bins)
     p = pl.pitch
     sf = np.asarray(stroke_frame, dtype=np.int64)
     parts: list[tuple[np.ndarray, ...]] = []
-    for (tj, ti) in sorted(pl.tiles):
-        tile = pl.tile(tj, ti)
-        members = pl.tiles[(tj, ti)]
-        ideal_d, ideal_k = raster.argmin_sdf(pl.shapes, [n for n in members if n < n_ideal],
-                                             tile, pl.pad)
-        drawn_d, drawn_j = raster.argmin_sdf(pl.shapes, [n for n in members if n >= n_ideal],
-                                             tile, p)
-        on = drawn_d <= 0
-        inner = ideal_d <= -tol
-        hole = inner & ~on
-        excess = on & (ideal_d > tol)
-        ring = (ideal_d > tol) & (ideal_d <= tol + bins * p)
-        if not (inner.any() or ring.any() or excess.any()):
-            continue
-        rim = inner & (ideal_d > -(tol + 2 * p))
-        st.inner += _bincount(ideal_k[inner], n_ideal)
-        st.holes += _bincount(ideal_k[hole], n_ideal)
-        st.drawn_in += _bincount(ideal_k[inner & on], n_ideal)
-        st.rim += _bincount(ideal_k[rim], n_ideal)
-        st.rim_holes += _bincount(ideal_k[rim & ~on], n_ideal)
-        if ring.any():
-            b = np.minimum(((ideal_d[ring] - tol) // p).astype(np.int64), bins - 1)
-            np.add.at(st.ring, (ideal_k[ring], b), 1)
-            np.add.at(st.ring_on, (ideal_k[ring], b), on[ring].astype(np.int64))
-        x, y = tile.centres()
-        if hole.any():
-            np.maximum.at(st.hole_max, ideal_k[hole], -ideal_d[hole])
-            hk, hd, hx, hy = ideal_k[hole], -ideal_d[hole], x[hole], y[hole]
-            order = np.lexsort((hy, hx, -hd, hk))       # per shape: deepest first
-            first = np.ones(order.size, dtype=bool)
-            first[1:] = hk[order][1:] != hk[order][:-1]
-            for idx in order[first]:
-                k = int(hk[idx])
-                cand = (float(hd[idx]), float(hx[idx]), float(hy[idx]))
-                old = st.deepest.get(k)
-                if old is None or (cand[0], -cand[1], -cand[2]) > (old[0], -old[1], -old[2]):
-                    st.deepest[k] = cand
-        done = inner & on
-        if done.any():
-            np.minimum.at(st.drawn_min, ideal_k[done], -ideal_d[done])
-        if excess.any():
-            parts.append((sf[drawn_j[excess] - n_ideal], ideal_k[excess], ideal_d[excess],
-                          x[excess], y[excess]))
+    seen = 0
+    for batch in pl.batches(tiles, raster.BATCH_TILES // 8):
+        ideal_all, k_all = pl.distances(batch, True)
+        drawn_all, j_all = pl.distances(batch, False)
+        seen += batch.size
+        if progress is not None:
+            progress(seen, tiles.size)
+        for slot, t in enumerate(batch.tolist()):
+            tile = pl.tile(*pl.where(t))
+            ideal_d = ideal_all[slot, :tile.ny, :tile.nx]
+            ideal_k = k_all[slot, :tile.ny, :tile.nx]
+            drawn_d = drawn_all[slot, :tile.ny, :tile.nx]
+            drawn_j = j_all[slot, :tile.ny, :tile.nx]
+            on = drawn_d <= 0
+            inner = ideal_d <= -tol
+            hole = inner & ~on
+            excess = on & (ideal_d > tol)
+            ring = (ideal_d > tol) & (ideal_d <= tol + bins * p)
+            if not (inner.any() or ring.any() or excess.any()):
+                continue
+            rim = inner & (ideal_d > -(tol + 2 * p))
+            st.inner += _bincount(ideal_k[inner], n_ideal)
+            st.holes += _bincount(ideal_k[hole], n_ideal)
+            st.drawn_in += _bincount(ideal_k[inner & on], n_ideal)
+            st.rim += _bincount(ideal_k[rim], n_ideal)
+            st.rim_holes += _bincount(ideal_k[rim & ~on], n_ideal)
+            if ring.any():
+                b = np.minimum(((ideal_d[ring] - tol) // p).astype(np.int64), bins - 1)
+                np.add.at(st.ring, (ideal_k[ring], b), 1)
+                np.add.at(st.ring_on, (ideal_k[ring], b), on[ring].astype(np.int64))
+            x, y = tile.centres()
+            if hole.any():
+                np.maximum.at(st.hole_max, ideal_k[hole], -ideal_d[hole])
+                hk, hd, hx, hy = ideal_k[hole], -ideal_d[hole], x[hole], y[hole]
+                order = np.lexsort((hy, hx, -hd, hk))       # per shape: deepest first
+                first = np.ones(order.size, dtype=bool)
+                first[1:] = hk[order][1:] != hk[order][:-1]
+                for idx in order[first]:
+                    k = int(hk[idx])
+                    cand = (float(hd[idx]), float(hx[idx]), float(hy[idx]))
+                    old = st.deepest.get(k)
+                    if old is None or (cand[0], -cand[1], -cand[2]) > (old[0], -old[1], -old[2]):
+                        st.deepest[k] = cand
+            done = inner & on
+            if done.any():
+                np.minimum.at(st.drawn_min, ideal_k[done], -ideal_d[done])
+            if excess.any():
+                parts.append((sf[drawn_j[excess] - n_ideal], ideal_k[excess], ideal_d[excess],
+                              x[excess], y[excess]))
     if parts:
         cols = [np.concatenate([q[i] for q in parts]) for i in range(5)]
     else:
@@ -525,27 +538,44 @@ def _runs(points: list[tuple[float, float]], step: float) -> int:
 
 def coverage_reasons(layer: Layer, run: sim.Run, tool: int, frames: Sequence[Frame],
                      rows: Sequence[int], tol: int = TOLERANCE, pkg: str = "",
-                     tape_file: str = "") -> list[Reason]:
+                     tape_file: str = "", clip: Box | None = None,
+                     progress: Progress | None = None, title: str = "") -> list[Reason]:
     """Why what ``run`` draws with ``tool`` differs from ``layer`` (an empty
-    list when :func:`harness.raster.compare` finds no difference)."""
+    list when :func:`harness.raster.compare` finds no difference).  Only
+    the tiles meeting the box ``clip`` (units) are looked at, when given."""
     def reason(kind: str, message: str, card: int | None = None,
                frame: int | None = None, row: int | None = None) -> Reason:
         return Reason(pkg, tape_file, kind, message, card, frame, row)
 
+    def told(what: str) -> Callable[[int, int], None] | None:
+        if progress is None:
+            return None
+        return lambda done, total: progress.say(f"{title}: {what} tile {done} of {total}")
+
+    drawn = run_shapes(run, tool)
+    shapes = raster.ShapeSet.of(list(layer.shapes) + drawn)
     try:
-        report = raster.compare(run, tool, layer, tol=tol)
+        report = raster.compare(run, tool, layer, tol=tol, clip=clip, drawn=drawn,
+                                shapes=shapes, progress=told("coverage,"))
     except ValueError as exc:
         return [reason("uncheckable", f"coverage cannot be checked: {exc}")]
     if report.ok:
         return []
-    drawn = run_shapes(run, tool)
     stroke_frame = sim.stroke_frames(frames)
     p = report.pitch_mm * 100
     reach = max(float(tool), 10 * p)
     bins = math.ceil(reach / p)
-    pl = raster.plan(layer.shapes, drawn, tol, pitch=p, reach=reach)
+    pl = raster.plan(layer.shapes, drawn, tol, pitch=p, reach=reach, clip=clip, shapes=shapes)
     assert pl is not None
-    st, ex = _scan(pl, tol, stroke_frame, bins)
+    # The tiles that differ, and every tile of a shape that reaches one of
+    # them: each such shape's statistics are whole, and no other shape has
+    # a hole or a drawn ring (those pixels would differ).
+    differ = np.flatnonzero(np.isin(pl.keys, [ti + tj * pl.ntx for tj, ti in report.differ]))
+    row_tile = np.repeat(np.arange(pl.keys.size), np.diff(pl.start))
+    in_differ = np.isin(row_tile, differ)
+    suspects = np.unique(pl.members[in_differ & (pl.members < pl.n_ideal)])
+    tiles = np.union1d(differ, row_tile[np.isin(pl.members, suspects)])
+    st, ex = _scan(pl, tol, stroke_frame, bins, tiles, told("differences,"))
     area = (p / 100) ** 2
     out: list[tuple[tuple, Reason]] = []
     boxes = np.array([s.bbox() for s in drawn]) if drawn else np.zeros((0, 4))
@@ -553,7 +583,7 @@ def coverage_reasons(layer: Layer, run: sim.Run, tool: int, frames: Sequence[Fra
     # Pads drawn too large: the bands just outside drawn nearly all round;
     # ``grown``: how far out the bands are drawn so.
     grown = np.zeros(pl.n_ideal)
-    for k in range(pl.n_ideal):
+    for k in suspects.tolist():
         o = layer.origin(k)
         if not (o and o.kind == "D"):
             continue
@@ -624,17 +654,16 @@ def coverage_reasons(layer: Layer, run: sim.Run, tool: int, frames: Sequence[Fra
         np.zeros(ex.dist.shape, dtype=bool)
     keep = ~explained
     fr_all, d_all, x_all, y_all = ex.frame[keep], ex.dist[keep], ex.x[keep], ex.y[keep]
-    ideal = layer.shapes
     for fr in np.unique(fr_all).tolist():
         sel = fr_all == fr
         d, xs, ys = d_all[sel], x_all[sel], y_all[sel]
         i = np.lexsort((ys, xs, -d))[0]
         fx, fy = float(xs[i]), float(ys[i])
-        dists = [float(sh.sdf(np.array([fx]), np.array([fy]))[0]) for sh in ideal]
-        if dists:
-            k = int(np.argmin(dists))
+        if pl.n_ideal:
+            dist, which = pl.set.nearest(np.array([fx]), np.array([fy]), upto=pl.n_ideal)
+            k = int(which[0])
             o = layer.origin(k)
-            where = (f", {_mm(dists[k])} mm from the nearest shape"
+            where = (f", {_mm(float(dist[0]))} mm from the nearest shape"
                      + (f" (card {o.card})" if o else ""))
         else:
             where = ", and this tape's layer holds nothing"
@@ -654,9 +683,88 @@ def coverage_reasons(layer: Layer, run: sim.Run, tool: int, frames: Sequence[Fra
 # ---------------------------------------------------------------------------
 # One tape, one package, the deck.
 # ---------------------------------------------------------------------------
+#: How far beyond the field (and the deck's shapes), in units, coverage is
+#: still looked at.
+FIELD_MARGIN = 1000
+
+
+def field_box(pkg: Package, layer: Layer) -> Box:
+    """The part of the board where coverage is checked (units, board
+    coordinates): the 1200 x 1200 mm field at the package's start point and
+    scale, and the deck's shapes of the layer, with :data:`FIELD_MARGIN`
+    round.  A tape's drawing beyond it is the reason ``field`` already
+    (the tool centre left the field); so a stray 10 m circle costs no more
+    than the field."""
+    num, den = pkg.scale
+    x0 = -pkg.start[0] * den / num
+    y0 = -pkg.start[1] * den / num
+    x1 = (FIELD - pkg.start[0]) * den / num
+    y1 = (FIELD - pkg.start[1]) * den / num
+    box = raster.union_box([(x0, x1, y0, y1), layer.bbox()])
+    assert box is not None
+    m = FIELD_MARGIN
+    return box[0] - m, box[1] + m, box[2] - m, box[3] + m
+
+
+#: Seconds before the first progress line, and between two of them; the
+#: environment variable VERIFY_PROGRESS_AFTER overrides the first.
+PROGRESS_AFTER = 2.0
+PROGRESS_EVERY = 1.0
+
+
+class Progress:
+    """Progress lines on standard error for a long check: nothing in the
+    first :data:`PROGRESS_AFTER` seconds, then a line at most every
+    :data:`PROGRESS_EVERY` seconds (rewritten in place on a terminal).
+    Standard output is never touched."""
+
+    def __init__(self, stream=None) -> None:
+        self.stream = stream if stream is not None else sys.stderr
+        self.start = time.monotonic()
+        try:
+            after = float(os.environ.get("VERIFY_PROGRESS_AFTER", PROGRESS_AFTER))
+        except ValueError:
+            after = PROGRESS_AFTER
+        self.next = self.start + after
+        self.shown = False
+        try:
+            self.tty = self.stream.isatty()
+        except (AttributeError, ValueError):
+            self.tty = False
+
+    def say(self, text: str) -> None:
+        """Show ``text`` if it is time to."""
+        now = time.monotonic()
+        if now < self.next:
+            return
+        self.next = now + PROGRESS_EVERY
+        line = f"verify: {text} ({now - self.start:.0f} s)"
+        try:
+            if self.tty:
+                self.stream.write("\r\x1b[K" + line)
+            else:
+                self.stream.write(line + "\n")
+            self.stream.flush()
+        except (OSError, ValueError):
+            return
+        self.shown = True
+
+    def end(self) -> None:
+        """Finish the line rewritten in place, if any."""
+        if self.shown and self.tty:
+            try:
+                self.stream.write("\n")
+                self.stream.flush()
+            except (OSError, ValueError):
+                pass
+        self.shown = False
+
+
 def check_tape(pkg: Package, layer: str, path: Path, tol: int = TOLERANCE,
-               code: str = "auto") -> TapeCheck:
+               code: str = "auto", progress: Progress | None = None) -> TapeCheck:
     """Check one tape file of a package against the package's ideal layer."""
+    if progress is not None:
+        progress.say(f"{TAPE_TITLES[layer]}: reading {path.name}")
     tool = dict(zip(LAYERS, pkg.tools))[layer]
     check = TapeCheck(pkg.name, layer, path.name, tool, pkg.code)
 
@@ -698,7 +806,8 @@ def check_tape(pkg: Package, layer: str, path: Path, tol: int = TOLERANCE,
              f"machine (start point at {pkg.start_mm[0]:.2f}, {pkg.start_mm[1]:.2f} mm, scale "
              f"{pkg.scale[0]}:{pkg.scale[1]})", frame=i + 1, row=rows[i])
     check.reasons += coverage_reasons(pkg.layers[layer], run, tool, frames, rows, tol,
-                                      pkg.name, path.name)
+                                      pkg.name, path.name, field_box(pkg, pkg.layers[layer]),
+                                      progress, TAPE_TITLES[layer])
     shapes = [r for r in check.reasons if r.kind != "excess"]
     strays = [r for r in check.reasons if r.kind == "excess"]
     check.omitted = max(0, len(shapes) - MAX_REASONS) + max(0, len(strays) - MAX_REASONS)
@@ -746,7 +855,8 @@ def package_files_agree(tapedir: Path, file_name: str) -> None:
 
 
 def verify(deck_text: str, tapedir: str | Path, tol: int = TOLERANCE,
-           code: str = "auto", deck_name: str = "DECK") -> Verdict:
+           code: str = "auto", deck_name: str = "DECK",
+           progress: Progress | None = None) -> Verdict:
     """Check the tapes in ``tapedir`` against the deck; see the module doc.
 
     Raises :class:`VerifyError` when the deck cannot be read by the oracle
@@ -774,7 +884,7 @@ def verify(deck_text: str, tapedir: str | Path, tol: int = TOLERANCE,
                           (f"{p.start_mm[0]:.2f}", f"{p.start_mm[1]:.2f}"))
         for layer in LAYERS:
             pc.tapes.append(check_tape(p, layer, tapedir / f"{p.file_name}-{layer}.ptp",
-                                       tol, code))
+                                       tol, code, progress))
         verdict.packages.append(pc)
     return verdict
 
@@ -801,10 +911,13 @@ def main(deck: str, tapedir: str, tol_mm: str = "0.05", code: str = "auto") -> i
         print(f"verify: {deck}: byte {exc.start + 1} is not ASCII: not a card deck",
               file=sys.stderr)
         return 2
+    progress = Progress()
     try:
-        verdict = verify(deck_text, tapedir, int(tol), code, deck_name=deck)
+        verdict = verify(deck_text, tapedir, int(tol), code, deck_name=deck, progress=progress)
     except VerifyError as exc:
+        progress.end()
         print(f"verify: {exc}", file=sys.stderr)
         return 2
+    progress.end()
     sys.stdout.write(verdict.text())
     return 0 if verdict.passed else 1
