@@ -4,8 +4,8 @@
 !> docs/TOOLS.md. Exit status: 0 done, 1 the input had errors, 2 usage or I/O.
 program em703
     use em703_cli, only: cli_t, parse_command_line
-    use em703_commands, only: run_list, run_sim, run_svg, run_gcode, run_gerber, run_punch, &
-                              run_view, run_split
+    use em703_commands, only: run_list, run_sim, run_svg, run_gcode, run_gerber, run_drill, &
+                              run_punch, run_view, run_split
     implicit none
 
     type(cli_t) :: c
@@ -20,9 +20,11 @@ program em703
     case ('svg')
         status = run_svg(c%file, c%out)
     case ('gcode')
-        status = run_gcode(c%file, c%chord_tol, c%use_z, c%out)
+        status = run_gcode(c%file, c%chord_tol, c%use_z, c%dialect, c%out)
     case ('gerber')
         status = run_gerber(c%file, c%out)
+    case ('drill')
+        status = run_drill(c%file, c%out)
     case ('punch')
         status = run_punch(c%code, c%file, c%out)
     case ('view')

@@ -25,7 +25,7 @@ module em703_cli
     !> What the command line asks for. Unused fields keep their defaults,
     !> which are the subcommands' defaults.
     type, public :: cli_t
-        character(len=:), allocatable :: command    !< list, sim, svg, gcode, gerber, punch, view, split
+        character(len=:), allocatable :: command    !< list, sim, svg, gcode, gerber, drill, punch, view, split
         character(len=:), allocatable :: file       !< the one file argument
         character(len=:), allocatable :: out        !< -o FILE ('' = the default)
         !> --code: a tape code (list, sim: 8, K or auto; view: auto, em703, iso or
@@ -35,6 +35,7 @@ module em703_cli
         logical :: utf8 = .false.                   !< list --utf8
         logical :: bare = .false.                   !< list --bare
         logical :: use_z = .false.                  !< gcode --z
+        character(len=:), allocatable :: dialect    !< gcode --dialect linuxcnc|grbl
         integer :: num = 1, den = 1                 !< sim --scale N:D
         integer(int64) :: start_x = 0, start_y = 0  !< sim --start, 0.01 mm
         integer(int64) :: tool = 50                 !< sim --tool, 0.01 mm
@@ -49,13 +50,14 @@ module em703_cli
     integer(int64), parameter :: FIELD_UNITS = nint(FIELD_MM * 100, int64), MAX_TOOL = 2000
 
     !> The options of each subcommand, besides -h and --help.
-    character(len=*), parameter :: SUBCOMMANDS(8) = [character(len=6) :: &
-        'list', 'sim', 'svg', 'gcode', 'gerber', 'punch', 'view', 'split']
-    character(len=*), parameter :: OPTIONS(8) = [character(len=40) :: &
+    character(len=*), parameter :: SUBCOMMANDS(9) = [character(len=6) :: &
+        'list', 'sim', 'svg', 'gcode', 'gerber', 'drill', 'punch', 'view', 'split']
+    character(len=*), parameter :: OPTIONS(9) = [character(len=40) :: &
         '--utf8 --bare --code', &
         '--scale --start --svg --tool --code', &
         '-o --output', &
-        '-o --output --z --chords', &
+        '-o --output --z --chords --dialect', &
+        '-o --output', &
         '-o --output', &
         '-o --output --code', &
         '--code --rows', &
@@ -90,6 +92,7 @@ contains
         cli%out = ''
         cli%svg = ''
         cli%code = 'auto'
+        cli%dialect = 'linuxcnc'
         if (cli%command == 'punch') cli%code = ''
         nmove = 0
         i = 2
@@ -111,7 +114,7 @@ contains
         select case (cli%command)
         case ('list', 'sim', 'view')
             call need_file(cli%command, cli%file, 'TAPE')
-        case ('svg', 'gerber')
+        case ('svg', 'gerber', 'drill')
             call need_file(cli%command, cli%file, 'JOB (a job sheet NAME.job)')
         case ('gcode')
             call need_file(cli%command, cli%file, 'TAPE or JOB')
@@ -149,6 +152,14 @@ contains
             cli%bare = .true.
         case ('--z')
             cli%use_z = .true.
+        case ('--dialect')
+            v = option_value(sub, i, nargs)
+            select case (v)
+            case ('linuxcnc', 'grbl')
+                cli%dialect = v
+            case default
+                call usage_error(sub, '--dialect takes linuxcnc or grbl, not "' // v // '"')
+            end select
         case ('-o', '--output')
             cli%out = option_value(sub, i, nargs)
             if (sub == 'punch' .and. len(cli%out) == 0) call usage_error('punch', '-o needs a file name')
@@ -353,13 +364,17 @@ contains
             'Exit status: 0 done, 1 a bad job sheet or tape, 2 usage or I/O error.'])
         case ('gcode')
             call put([character(len=78) :: &
-            'usage: em703 gcode TAPE|JOB [--chords TOL] [--z] [-o FILE]', &
+            'usage: em703 gcode TAPE|JOB [--dialect linuxcnc|grbl] [--chords TOL] [--z]', &
+            '                            [-o FILE]', &
             '', &
             'Translates a tape (or the three tapes of a job sheet NAME.job, each after', &
             'a tool change T1..T3 M06) to an ISO 6983 program: %, N numbers, G21 G90,', &
             'G00 travel, G01 lines (F5500), G02/G03 arcs with I J (F1500), the tool', &
             'down and up as M03/M05, M02, %. Origin: the start point.', &
             '', &
+            '  --dialect D   linuxcnc (default, as above) or grbl: what GRBL 1.1', &
+            '                accepts (no %, M0 pauses instead of tool changes, F in', &
+            '                the first block, arc centres exact to GRBL''s check)', &
             '  --chords TOL  arcs as chords for line-only machines, step angle', &
             '                2 arccos(1 - TOL/R), never more than TOL mm off the arc', &
             '  --z           tool down / up as Z moves (G01 Z0.000 / G00 Z1.000)', &
@@ -376,6 +391,20 @@ contains
             'the tool down, D03 flashes for dots, arcs in G75 with I J, D02 travel.', &
             '', &
             '  -o FILE   write the image to FILE (default: standard output)', &
+            '', &
+            'Exit status: 0 done, 1 a bad tape or job sheet, 2 usage or I/O error.'])
+        case ('drill')
+            call put([character(len=78) :: &
+            'usage: em703 drill JOB [-o FILE]', &
+            '', &
+            'Writes an Excellon drill file (METRIC) with one hit per pad of the job''s', &
+            'small- and large-pad tapes, in the order the tapes reach the pads (for a', &
+            '1977 board every pad is a hole; for a NAME-DRILL job of gerber2deck the', &
+            'hits are the board''s holes). A pad is found again from what the tape', &
+            'draws: its centre, and as its hole a round pad''s diameter or a', &
+            'rectangular pad''s shorter side; one tool per hole size.', &
+            '', &
+            '  -o FILE   write the drill file to FILE (default: standard output)', &
             '', &
             'Exit status: 0 done, 1 a bad tape or job sheet, 2 usage or I/O error.'])
         case ('punch')
@@ -415,9 +444,10 @@ contains
             '  sim TAPE [--scale N:D] [--start X,Y] [--svg FILE]', &
             '                                       run it on the coordinatograph', &
             '  svg JOB [-o FILE]                    draw the tapes of a job sheet', &
-            '  gcode TAPE|JOB [--chords TOL] [--z] [-o FILE]', &
+            '  gcode TAPE|JOB [--dialect linuxcnc|grbl] [--chords TOL] [--z] [-o FILE]', &
             '                                       ISO 6983 G-code', &
             '  gerber JOB [-o FILE]                 Gerber RS-274X', &
+            '  drill JOB [-o FILE]                  Excellon: a hit per pad, tour order', &
             '  punch --code iso|eia [-o TAPE] FILE  punch text on ISO or EIA tape', &
             '  view TAPE                            a picture of a punched tape', &
             '  split [--max N] DX DY                a long move split into frames', &

@@ -16,12 +16,14 @@ module em703_commands
     use em703_svg, only: svg_run, svg_job
     use em703_gcode, only: gcode_program
     use em703_gerber, only: gerber_image
+    use em703_drill, only: hole_t, find_holes, drill_program
     use em703_punch, only: punch_text
     use em703_view, only: view_tape, guess_code
     use em703_split, only: frames_needed, split_frame
     implicit none
     private
-    public :: run_list, run_sim, run_svg, run_gcode, run_gerber, run_punch, run_view, run_split
+    public :: run_list, run_sim, run_svg, run_gcode, run_gerber, run_drill, run_punch, run_view, &
+              run_split
 
     integer, parameter, public :: EXIT_OK = 0, EXIT_INPUT = 1, EXIT_USAGE = 2
 
@@ -389,8 +391,8 @@ contains
     end function run_svg
 
     !> em703 gcode: a tape or a job as an ISO 6983 program.
-    integer function run_gcode(path, chord_tol, use_z, out) result(status)
-        character(len=*), intent(in) :: path, out
+    integer function run_gcode(path, chord_tol, use_z, dialect, out) result(status)
+        character(len=*), intent(in) :: path, dialect, out
         real(real64), intent(in) :: chord_tol
         logical, intent(in) :: use_z
         type(job_t) :: job
@@ -410,7 +412,7 @@ contains
                 return
             end if
             call gcode_program(runs, labels, tools, 'EM-703 job ' // job%name // ', code ' // &
-                               job%code, chord_tol, use_z, text)
+                               job%code, chord_tol, use_z, text, dialect)
         else
             call load_run(path, 'auto', runs(1), status)
             if (status /= EXIT_OK) return
@@ -425,7 +427,7 @@ contains
             end if
             call gcode_program(runs(1:1), labels(1:1), tools(1:1), 'EM-703 tape, code ' // &
                                runs(1)%code // ', ' // str(runs(1)%nframes) // ' frames', &
-                               chord_tol, use_z, text)
+                               chord_tol, use_z, text, dialect)
         end if
         s2 = close_output(out, text, tmp)
         if (s2 /= EXIT_OK) status = s2
@@ -463,6 +465,37 @@ contains
         s2 = close_output(out, text, tmp)
         if (s2 /= EXIT_OK) status = s2
     end function run_gerber
+
+    !> em703 drill: the pads of a job's pad tapes as an Excellon drill file.
+    integer function run_drill(path, out) result(status)
+        character(len=*), intent(in) :: path, out
+        type(job_t) :: job
+        type(run_t) :: runs(NLAYERS)
+        character(len=200) :: labels(NLAYERS)
+        integer(int64) :: tools(NLAYERS)
+        type(text_t) :: text
+        type(hole_t), allocatable :: holes(:)
+        character(len=:), allocatable :: tmp
+        integer :: l, n, s2
+        logical :: complete
+        call load_job(path, job, runs, labels, tools, status, complete)
+        if (.not. complete) return
+        n = 0
+        allocate(holes(0))
+        do l = 1, NLAYERS
+            if (job%layers(l)%key == 'cond') cycle
+            call find_holes(runs(l), tools(l), holes, n)
+        end do
+        s2 = open_output(out, text, tmp)
+        if (s2 /= EXIT_OK) then
+            status = s2
+            return
+        end if
+        call drill_program(holes(1:n), 'EM-703 job ' // job%name // ': ' // str(n) // &
+                           ' holes of the small- and large-pad tapes', text)
+        s2 = close_output(out, text, tmp)
+        if (s2 /= EXIT_OK) status = s2
+    end function run_drill
 
     ! ------------------------------------------------------------------
     !> em703 punch: text onto an ISO 7-bit or EIA RS-244 tape image.

@@ -10,6 +10,19 @@
 !> use_z, as Z moves (down G01 Z0.000, up G00 Z1.000). A dot is the tool
 !> lowered and raised where it stands. M02 ends the program, then `%`.
 !>
+!> The GRBL 1.1 dialect (dialect "grbl"; GRBL is the firmware of most hobby
+!> plotters, lasers and mills) writes only what GRBL 1.1 accepts: no `%` lines
+!> (error:1), no tool change (T M06 is error:20: between tapes the program
+!> pauses with M0 and a comment names the next tape and tool), only G and M
+!> codes of GRBL's list (G0-G3, G17, G21, G90, G94; M0, M2, M3, M5), a feed
+!> rate in the first block, and arcs whose end lies on their circle within
+!> GRBL's check (error:33: the two radii may differ by 0.005 mm, or by 0.1 %
+!> of the radius): a tape arc may end one unit (0.01 mm) off its circle, and
+!> the centre of such an arc is moved onto the perpendicular bisector of the
+!> chord, the point of the bisector nearest the tape's centre (the arc still
+!> runs from the same start to the same end). Comments are kept under
+!> GRBL's 80 characters a line.
+!>
 !> Line-only machines: chord_tol > 0 replaces every arc by equal chords with
 !> the step angle of seed 002, 2*arccos(1 - tol/R), so that no point of a chord
 !> is farther than tol (mm) from the arc; the bound keeps a margin for the
@@ -38,7 +51,11 @@ module em703_gcode
         logical :: down = .false.
         integer :: feed = 0              !< current F (0 = none yet)
         logical :: use_z = .false.
+        logical :: grbl = .false.        !< the GRBL 1.1 dialect
     end type state_t
+
+    !> The longest comment of the GRBL dialect (GRBL reads 80 characters a line).
+    integer, parameter :: GRBL_COMMENT = 70
 
 contains
 
@@ -55,7 +72,7 @@ contains
     !> The program for one or more runs (tapes run one after another; for more
     !> than one, each starts with a tool change T<l> M06). labels: a comment for
     !> each tape; tools: tool widths in units (0 = unknown).
-    subroutine gcode_program(runs, labels, tools, title, chord_tol, use_z, text)
+    subroutine gcode_program(runs, labels, tools, title, chord_tol, use_z, text, dialect)
         type(run_t), intent(in) :: runs(:)
         character(len=*), intent(in) :: labels(:)
         integer(int64), intent(in) :: tools(:)
@@ -63,6 +80,7 @@ contains
         real(real64), intent(in) :: chord_tol      !< mm; 0 = keep the arcs
         logical, intent(in) :: use_z
         type(text_t), intent(inout) :: text
+        character(len=*), intent(in), optional :: dialect   !< "linuxcnc" (default) or "grbl"
         type(state_t) :: st
         type(walker_t) :: w
         type(error_t), allocatable :: err
@@ -70,12 +88,18 @@ contains
         logical :: got
         integer :: l
         st%use_z = use_z
-        call text%add('%')
-        call text%add('(' // clean(title) // ')')
-        call text%add('(units mm, absolute, origin at the start point, lines F' // &
-            str(nint(LINE_SPEED)) // ', arcs F' // str(nint(ARC_SPEED)) // ' mm/min)')
-        if (chord_tol > 0) call text%add('(arcs as chords within ' // fixed(chord_tol, 4) // ' mm)')
-        call block(st, text, 'G21 G90 G17 G94')
+        if (present(dialect)) st%grbl = dialect == 'grbl'
+        if (.not. st%grbl) call text%add('%')
+        call comment(st, text, title)
+        call comment(st, text, 'units mm, absolute, origin at the start point, lines F' // &
+            str(nint(LINE_SPEED)) // ', arcs F' // str(nint(ARC_SPEED)) // ' mm/min')
+        if (chord_tol > 0) call comment(st, text, 'arcs as chords within ' // fixed(chord_tol, 4) // ' mm')
+        if (st%grbl) then
+            st%feed = nint(LINE_SPEED)
+            call block(st, text, 'G21 G90 G17 G94 F' // str(st%feed))
+        else
+            call block(st, text, 'G21 G90 G17 G94')
+        end if
         if (use_z) then
             call block(st, text, 'G00 Z' // Z_UP)
         else
@@ -83,13 +107,17 @@ contains
         end if
         do l = 1, size(runs)
             if (tools(l) > 0) then
-                call text%add('(' // clean(trim(labels(l))) // ', tool ' // mm(tools(l)) // ' mm)')
+                call comment(st, text, trim(labels(l)) // ', tool ' // mm(tools(l)) // ' mm')
             else
-                call text%add('(' // clean(trim(labels(l))) // ')')
+                call comment(st, text, trim(labels(l)))
             end if
             if (size(runs) > 1) then
                 call up(st, text)
-                call block(st, text, 'T' // str(l) // ' M06')
+                if (st%grbl) then
+                    call block(st, text, 'M0')       ! pause: the operator changes the tool
+                else
+                    call block(st, text, 'T' // str(l) // ' M06')
+                end if
             end if
             call walk_start(w, runs(l), err)
             if (allocated(err)) exit
@@ -101,8 +129,20 @@ contains
         end do
         call up(st, text)
         call block(st, text, 'M02')
-        call text%add('%')
+        if (.not. st%grbl) call text%add('%')
     end subroutine gcode_program
+
+    !> A comment line; in the GRBL dialect cut to GRBL_COMMENT characters.
+    subroutine comment(st, text, words)
+        type(state_t), intent(in) :: st
+        type(text_t), intent(inout) :: text
+        character(len=*), intent(in) :: words
+        if (st%grbl .and. len(words) > GRBL_COMMENT) then
+            call text%add('(' // clean(words(1:GRBL_COMMENT)) // ')')
+        else
+            call text%add('(' // clean(words) // ')')
+        end if
+    end subroutine comment
 
     subroutine move(st, text, s, chord_tol)
         type(state_t), intent(inout) :: st
@@ -126,7 +166,14 @@ contains
             call block(st, text, 'G01 X' // c3(s%x1) // ' Y' // c3(s%y1) // f)
         case (SEG_ARC)
             call down(st, text)
-            if (chord_tol <= 0) then
+            if (chord_tol <= 0 .and. st%grbl .and. off_circle(s)) then
+                ! the centre on the chord's bisector: both radii equal
+                call bisector_centre(s, cx, cy)
+                f = feed(st, nint(ARC_SPEED))
+                call block(st, text, merge('G02', 'G03', s%sweep < 0) // ' X' // c3(s%x1) // &
+                    ' Y' // c3(s%y1) // ' I' // fixed(cx - real(s%x0, real64) / 100, 3) // &
+                    ' J' // fixed(cy - real(s%y0, real64) / 100, 3) // f)
+            else if (chord_tol <= 0) then
                 f = feed(st, nint(ARC_SPEED))
                 call block(st, text, merge('G02', 'G03', s%sweep < 0) // ' X' // c3(s%x1) // &
                     ' Y' // c3(s%y1) // ' I' // c3(s%cx - s%x0) // ' J' // c3(s%cy - s%y0) // f)
@@ -150,6 +197,36 @@ contains
             end if
         end select
     end subroutine move
+
+    !> Would GRBL find the arc's end off its circle? Its two radii differ by
+    !> more than 0.004 mm (GRBL refuses 0.005 mm and 0.1 % of the radius;
+    !> the margin is for its single-precision arithmetic). A full circle ends
+    !> where it starts.
+    logical function off_circle(s)
+        type(seg_t), intent(in) :: s
+        real(real64) :: r0, r1
+        r0 = hypot(real(s%cx - s%x0, real64), real(s%cy - s%y0, real64)) / 100
+        r1 = hypot(real(s%cx - s%x1, real64), real(s%cy - s%y1, real64)) / 100
+        off_circle = abs(r1 - r0) > 0.004_real64
+    end function off_circle
+
+    !> The point of the perpendicular bisector of the arc's chord nearest its
+    !> tape centre (mm), rounded to 0.001 mm: equally far from both ends
+    !> within the rounding.
+    subroutine bisector_centre(s, cx, cy)
+        type(seg_t), intent(in) :: s
+        real(real64), intent(out) :: cx, cy
+        real(real64) :: mx, my, ux, uy, len2, t
+        mx = real(s%x0 + s%x1, real64) / 200
+        my = real(s%y0 + s%y1, real64) / 200
+        ! the bisector's direction: the chord turned a quarter
+        ux = -real(s%y1 - s%y0, real64) / 100
+        uy = real(s%x1 - s%x0, real64) / 100
+        len2 = ux * ux + uy * uy
+        t = ((real(s%cx, real64) / 100 - mx) * ux + (real(s%cy, real64) / 100 - my) * uy) / len2
+        cx = anint((mx + t * ux) * 1000) / 1000
+        cy = anint((my + t * uy) * 1000) / 1000
+    end subroutine bisector_centre
 
     !> " F<f>" when the feed changes, else "".
     function feed(st, f) result(s)

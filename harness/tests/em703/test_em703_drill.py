@@ -1,0 +1,136 @@
+"""`em703 drill`: the pads of a job's pad tapes as an Excellon drill file.
+
+The hits are checked against the deck, read by the harness's own parser:
+every pad of every D card (rows expanded) is one hit at its centre, with a
+tool of its diameter (a rectangular pad's shorter side), and nothing else;
+the hits come in the order the tapes first reach the pads (the harness's
+simulator of the same tapes says which stroke reaches which pad first);
+gerbv, an independent reader, renders the file.
+"""
+
+from __future__ import annotations
+
+import re
+import shutil
+import subprocess
+from pathlib import Path
+
+import pytest
+
+from harness.deck import parse_deck
+from harness.sim import Arc, Dot, Line, simulate
+from harness.tape import decode
+
+from harness.tests.helpers import keys, run
+
+GERBV = shutil.which("gerbv")
+
+
+def read_drill(text: str) -> list[tuple[int, int, int]]:
+    """The hits (x, y in half units of 0.005 mm, tool diameter in units) of
+    a METRIC Excellon file with decimal points, read by this test."""
+    lines = text.splitlines()
+    assert lines[0] == "M48" and "METRIC,TZ" in lines and lines[-1] == "M30"
+    tools = {}
+    hits = []
+    tool = None
+    body = False
+    for line in lines[1:-1]:
+        if line.startswith(";"):
+            assert not body
+            continue
+        if line == "%":
+            body = True
+            continue
+        if m := re.fullmatch(r"T(\d\d)C(\d+\.\d{3})", line):
+            assert not body
+            tools[m.group(1)] = round(float(m.group(2)) * 100)
+        elif m := re.fullmatch(r"T(\d\d)", line):
+            assert body and m.group(1) in tools
+            tool = tools[m.group(1)]
+        elif m := re.fullmatch(r"X(-?\d+\.\d{3})Y(-?\d+\.\d{3})", line):
+            assert body and tool is not None
+            hits.append((round(float(m.group(1)) * 200), round(float(m.group(2)) * 200), tool))
+        else:
+            assert line in ("METRIC,TZ", "G90", "G05"), line
+    assert sorted(tools.values()) == [tools[k] for k in sorted(tools)], "tools by size"
+    return hits
+
+
+def deck_pads(pkg, layer: str | None = None, size: bool = False) -> list[tuple[int, ...]]:
+    """Every pad of the package (of one pad tape: a pad's size, the larger
+    of W and H, up to Dmax is small): centre in half units, hole in units
+    (and with size, the pad's size)."""
+    pads = []
+    for p in pkg.pads:
+        big = max(p.w, p.h or 0)
+        if layer is not None and (big <= pkg.dmax) != (layer == "small"):
+            continue
+        for i in range(p.n):
+            d = p.w if p.h is None else min(p.w, p.h)
+            pads.append((2 * (p.x + i * p.sx), 2 * (p.y + i * p.sy), d) + ((big,) if size else ()))
+    return pads
+
+
+def first_reached(tape: Path, pads: list[tuple[int, ...]]) -> list[int]:
+    """The pads of one tape in the order its strokes first reach them (a
+    stroke starting within a pad's size of its centre)."""
+    order: list[int] = []
+    seen = set()
+    for s in simulate(decode(tape.read_bytes()).frames).strokes:
+        x, y = (s.x, s.y) if isinstance(s, Dot) else (s.x0, s.y0)
+        for k, (px, py, _, big) in enumerate(pads):
+            if k not in seen and (2 * x - px) ** 2 + (2 * y - py) ** 2 <= big ** 2:
+                seen.add(k)
+                order.append(k)
+                break
+    return order
+
+
+def test_every_pad_of_every_example_is_a_hit_in_tour_order(em703_exe, examples, tmp_path) -> None:
+    checked = 0
+    for example in examples:
+        for pkg in parse_deck(example.deck.read_text()):
+            job = example.out / f"{pkg.file_name}.job"
+            out = tmp_path / f"{pkg.file_name}.drl"
+            got = run(em703_exe, "drill", job, "-o", out, check=0)
+            assert got.returncode == 0, got.stderr
+            hits = read_drill(out.read_text())
+            pads = deck_pads(pkg)
+            assert sorted(hits) == sorted(pads), job
+            # the order: the small-pad tape's first reach, then the large's
+            sheet = keys(job.read_text())
+            order = []
+            for layer in ("small", "large"):
+                on = deck_pads(pkg, layer, size=True)
+                reached = first_reached(job.parent / sheet[f"{layer}.tape"], on)
+                order += [on[k][:3] for k in reached]
+            assert hits == order, job
+            # the same bytes on every run, to a file or to standard output
+            assert run(em703_exe, "drill", job, check=0).stdout == out.read_bytes()
+            checked += len(hits)
+    assert checked > 100
+
+
+@pytest.mark.skipif(GERBV is None, reason="gerbv (Debian package gerbv) is not on PATH")
+def test_gerbv_reads_the_drill_file(em703_exe, examples, tmp_path) -> None:
+    """gerbv renders the drill file of the demo board: the holes are there."""
+    demo = next(e for e in examples if e.deck.name == "demo.crd")
+    job = next(iter(demo.jobs))
+    drl = tmp_path / "demo.drl"
+    run(em703_exe, "drill", job, "-o", drl)
+    png = tmp_path / "demo.png"
+    got = subprocess.run([GERBV, "-x", "png", "-D", "200", "-b", "#ffffff", "-f", "#000000ff",
+                          "-o", str(png), str(drl)], capture_output=True, timeout=60)
+    assert got.returncode == 0 and png.stat().st_size > 0, got.stderr
+    assert b"rror" not in got.stderr, got.stderr
+
+
+def test_bad_input_to_drill(em703_exe, examples, tmp_path) -> None:
+    job = next(iter(examples[0].jobs))
+    got = run(em703_exe, "drill", job, "-o", job, check=2)
+    assert b"will not write" in got.stderr
+    missing = run(em703_exe, "drill", tmp_path / "none.job", check=2)
+    assert missing.stderr.count(b"\n") == 1
+    usage = run(em703_exe, "drill", check=2)
+    assert b"missing JOB" in usage.stderr
