@@ -18,7 +18,7 @@ from seeds.seed004 import line_distance
 
 ROOT = Path(__file__).resolve().parents[2]
 
-coord = st.integers(-200000, 200000)
+coord = st.integers(-60000, 60000)      # every increment within m x 0x7FFF
 st_polylines = st.lists(st.lists(st.tuples(coord, coord), min_size=2, max_size=6),
                         min_size=1, max_size=5)
 
@@ -36,7 +36,18 @@ def test_command_words() -> None:
 
 
 def test_long_increments_are_split_at_15_bits() -> None:
-    """Blocks 7, 8, 14-16: a line of 100000 x 3 pulses becomes m = 4 moves."""
+    """Blocks 7, 8, 14-16: a line of 100000 x 3 pulses becomes m = 4 moves
+    (the machine's fixed ratio); so does one of 40000 x 0, and with m = 10
+    it is 10 moves; one longer than m x 0x7FFF is refused, naming it."""
+    assert [c.dx for c in s3.program([[(0, 0), (40000, 0)]])[2:6]] == [10000] * 4
+    assert len([c for c in s3.program([[(0, 0), (40000, 0)]], ratio=10)
+                if c.op == s3.OP_LINE]) == 10 + 10           # drawn, and the way back
+    with pytest.raises(ValueError, match=r"polyline 1 segment 1 from \(0, 0\) to "
+                                         r"\(131069, 0\): increment of 131069 pulses "
+                                         r"is more than the machine's largest, "
+                                         r"m x 32767 = 131068 \(m = 4; the parameter m "
+                                         r"would have to be at least 5\)"):
+        s3.program([[(0, 0), (131069, 0)]])
     cmds = s3.program([[(0, 0), (100000, 3)]])
     moves = [c for c in cmds if c.op == s3.OP_LINE]
     drawn = moves[:4]          # from the start point (0, 0) the first move is the line
@@ -77,7 +88,7 @@ def test_program_round_trip_draws_the_polylines(pls) -> None:
 
 def test_extra_points_stay_on_the_line() -> None:
     (pl,) = s3.execute(s3.program([[(0, 0), (98132, 87647)]]))
-    assert pl[0] == (0, 0) and pl[-1] == (98132, 87647) and len(pl) == 4   # m = 3
+    assert pl[0] == (0, 0) and pl[-1] == (98132, 87647) and len(pl) == 5   # m = 4, fixed
     assert all(abs(line_distance(x, y, 98132, 87647)) < 1 for x, y in pl)
 
 
@@ -136,6 +147,7 @@ def test_loopback_transfer_runs_the_program() -> None:
     assert all(line.endswith("ACK") for line in result.log)
     assert result.controller.complete
     assert b"".join(result.controller.memory)[:len(data)] == data
+    assert result.controller.program == data
     assert result.controller.drawn == s3.execute(s3.program(pls))
 
 
@@ -187,7 +199,7 @@ def test_cnclink_command(tmp_path: Path) -> None:
     ok = subprocess.run([sys.executable, "-m", "seeds", "cnclink", str(src), "-o", str(prog)],
                         cwd=ROOT, capture_output=True, text=True)
     assert ok.returncode == 0, ok.stderr
-    assert "cnc ran the program: 2 polylines" in ok.stdout
+    assert "it draws 2 polylines" in ok.stdout
     assert s3.decode(prog.read_bytes()) == s3.program(s3.read_polylines(text))
     bad = subprocess.run([sys.executable, "-m", "seeds", "cnclink", str(src), "--corrupt", "1"],
                          cwd=ROOT, capture_output=True)
