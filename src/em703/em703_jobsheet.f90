@@ -29,6 +29,7 @@ module em703_jobsheet
     type :: job_t
         character(len=:), allocatable :: path
         character(len=:), allocatable :: name
+        character(len=:), allocatable :: title    !< the job's name (key job; "" without one)
         character(len=:), allocatable :: code     !< "8", "K" or "auto" (no code line)
         integer :: num = 1, den = 1               !< scale num:den
         integer(int64) :: start_x = 0, start_y = 0  !< start point on the field, 0.01 mm
@@ -49,6 +50,7 @@ contains
 
         job%path = path
         job%name = ''
+        job%title = ''
         job%code = 'auto'
         do l = 1, NLAYERS
             job%layers(l)%key = trim(LAYER_KEYS(l))
@@ -88,6 +90,8 @@ contains
             select case (key)
             case ('name')
                 job%name = value
+            case ('job')
+                job%title = value
             case ('code')
                 if (value /= '8' .and. value /= 'K') then
                     call fail('code must be 8 or K, not "' // value // '"')
