@@ -80,7 +80,7 @@ module em703_page
         '  </section>', &
         '</main>']
 
-    character(len=100), parameter :: PAGE_TAIL(564) = [character(len=100) :: &
+    character(len=100), parameter :: PAGE_TAIL(567) = [character(len=100) :: &
         '<script>', &
         '// The EM-703 coordinatograph in the page: the tapes of a job sheet, decoded', &
         '// by em703 (the page reads the frames and the rows it was given, it never', &
@@ -204,7 +204,9 @@ module em703_page
         '    this.line = 0; this.arc = 0; this.travel = 0;        // units, steps ended', &
         '    this.pline = 0; this.parc = 0; this.ptravel = 0;     // units, the step being run', &
         '    this.stepLens = [];', &
-        '    this.last = null;     // the segment executed last', &
+        '    this.last = null;     // the segment executed last,', &
+        '    this.lastPass = 0;    // its pass of a cycle (0: not in a cycle)', &
+        '    this.lastPasses = 0;  // and the cycle''s passes', &
         '  };', &
         '  Machine.prototype.done = function () { return this.executed >= this.t.total; };', &
         '  // The step at fi: its segments a pass (1 or 2) and its passes.', &
@@ -229,6 +231,8 @@ module em703_page
         '    else if (s.kind === ARC) this.parc += s.len;', &
         '    else if (s.kind === TRAVEL) this.ptravel += s.len;', &
         '    if (this.pass === 1) this.stepLens.push([s.kind, s.len]);', &
+        '    this.lastPass = reps > 1 ? this.pass : 0;', &
+        '    this.lastPasses = reps > 1 ? reps : 0;', &
         '    this.executed += 1;', &
         '    this.j += 1;', &
         '    if (this.j === nseg) {', &
@@ -254,7 +258,6 @@ module em703_page
         '  Machine.prototype.state = function () {', &
         '    var l = this.line + this.pline, a = this.arc + this.parc, tr = this.travel + this.ptravel;', &
         '    var s = this.last;', &
-        '    var sh = this.done() ? [1, 1] : this.shape();', &
         '    return {', &
         '      tape: this.t.key,', &
         '      executed: this.executed,', &
@@ -266,8 +269,8 @@ module em703_page
         '      y_mm: this.py / 100,', &
         '      tool: this.down ? ''down'' : ''up'',', &
         '      k: s ? s.k : 0,', &
-        '      pass: sh[1] > 1 ? this.pass : 0,', &
-        '      passes: sh[1] > 1 ? sh[1] : 0,', &
+        '      pass: this.lastPass,', &
+        '      passes: this.lastPasses,', &
         '      drawn_mm: (l + a) / 100,', &
         '      line_mm: l / 100,', &
         '      arc_mm: a / 100,', &

@@ -120,7 +120,9 @@
     this.line = 0; this.arc = 0; this.travel = 0;        // units, steps ended
     this.pline = 0; this.parc = 0; this.ptravel = 0;     // units, the step being run
     this.stepLens = [];
-    this.last = null;     // the segment executed last
+    this.last = null;     // the segment executed last,
+    this.lastPass = 0;    // its pass of a cycle (0: not in a cycle)
+    this.lastPasses = 0;  // and the cycle's passes
   };
   Machine.prototype.done = function () { return this.executed >= this.t.total; };
   // The step at fi: its segments a pass (1 or 2) and its passes.
@@ -145,6 +147,8 @@
     else if (s.kind === ARC) this.parc += s.len;
     else if (s.kind === TRAVEL) this.ptravel += s.len;
     if (this.pass === 1) this.stepLens.push([s.kind, s.len]);
+    this.lastPass = reps > 1 ? this.pass : 0;
+    this.lastPasses = reps > 1 ? reps : 0;
     this.executed += 1;
     this.j += 1;
     if (this.j === nseg) {
@@ -170,7 +174,6 @@
   Machine.prototype.state = function () {
     var l = this.line + this.pline, a = this.arc + this.parc, tr = this.travel + this.ptravel;
     var s = this.last;
-    var sh = this.done() ? [1, 1] : this.shape();
     return {
       tape: this.t.key,
       executed: this.executed,
@@ -182,8 +185,8 @@
       y_mm: this.py / 100,
       tool: this.down ? 'down' : 'up',
       k: s ? s.k : 0,
-      pass: sh[1] > 1 ? this.pass : 0,
-      passes: sh[1] > 1 ? sh[1] : 0,
+      pass: this.lastPass,
+      passes: this.lastPasses,
       drawn_mm: (l + a) / 100,
       line_mm: l / 100,
       arc_mm: a / 100,
