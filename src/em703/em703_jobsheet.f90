@@ -1,6 +1,6 @@
 !> The job sheet TENZOR writes beside the tapes of a package (docs/FILES.md):
 !> `key = value` lines, `#` comment lines. The em703 tools read the name, the
-!> code, the scale, the start point and, for each tape T in small, large,
+!> job's own name (html's heading), the code, the scale, the start point and, for each tape T in small, large,
 !> cond, its file `T.tape` (relative to the job sheet's directory) and its
 !> tool `T.tool_mm`, and when TENZOR recorded them, its size `T.bytes` and
 !> SHA-256 `T.sha256`, which the tools check. Other keys are ignored.

@@ -100,7 +100,7 @@ module em703_page
         '                      15: ''\u041a\u041a'', 31: ''\u0413\u041c'' };', &
         '  var DIGITS_8 = [0, 1, 2, 3, 4, 5, 6, 7, 8, 9];', &
         '  var DIGITS_K = [0, 1, 2, 19, 4, 21, 22, 7, 8, 25];', &
-        '  var STRIP_ROWS = 41;              // rows shown, the reader mark in the middle', &
+        '  var STRIP_ROWS = 33;              // rows shown, the reader mark in the middle', &
         '', &
         '  function $(id) { return document.getElementById(id); }', &
         '  var job = JSON.parse($(''em703-job'').textContent);', &

@@ -244,7 +244,7 @@ def test_the_demo_page_draws_plays_and_fetches_nothing(em703_exe, example_jobs, 
     drawn = sum(1 for row in red for v in row if v < 128)
     assert drawn > 0.005 * width * height, (drawn, width, height)
     strip = browser.find_element("id", "strip").text
-    assert "GM" in strip and "trailer" in strip
+    assert "GM" in strip and "KK" in strip and "|o o o . o o    | 037   GM" in strip
     errors = [e for e in browser.get_log("browser") if e["level"] in ("SEVERE", "WARNING")]
     assert not errors, errors
     urls = set()
