@@ -1,5 +1,6 @@
 # The commands of README.md. Each sets up what is missing first (scripts/setup.sh).
-#   make demo      punch the tapes of the bundled demo board into out/
+#   make demo      punch the tapes of the bundled demo board into out/, and its page
+#                  out/NAME.html (em703 html)
 #   make test      run every test: the Fortran tests (fpm test), then pytest over the
 #                  oracle (harness/), the neighbouring systems (seeds/) and the benchmarks'
 #                  own tests (bench/)
@@ -42,8 +43,17 @@ setup:
 build: setup
 	@fpm build >/dev/null
 
+# demo: the tapes, then for each package punched its page (em703 html: the
+# tapes on an animated coordinatograph, to open in a browser).
+EM703 = "$$(fpm run --runner echo em703 2>/dev/null | tail -n 1)"
 demo: build
-	@$(TENZOR) $(DECK) -o $(OUT)
+	@set -o pipefail; list=$$(mktemp); trap 'rm -f "$$list"' EXIT; \
+	$(TENZOR) $(DECK) -o $(OUT) | tee "$$list"; \
+	em703=$(EM703); sed -n 's/^\([^:]*\): tapes .*/\1/p' "$$list" | \
+	    while read -r name; do \
+	        "$$em703" html "$(OUT)/$$name.job" -o "$(OUT)/$$name.html" || exit 1; \
+	        echo "$$name: page $(OUT)/$$name.html (open it in a browser)"; \
+	    done
 
 examples: build
 	@tenzor=$(TENZOR); find examples -name '*.crd' | LC_ALL=C sort | \

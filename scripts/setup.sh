@@ -4,6 +4,8 @@
 #   - gerbv (Debian package) renders em703's Gerber output for a cross-check;
 #   - f2c and ftnchek (Debian packages) judge the FORTRAN 77 of legacy/, and
 #     f2c with gcc and libf2c (libf2c2-dev) builds TENZOR a second way;
+#   - chromium and chromium-driver (Debian packages) run the page of
+#     `em703 html` headless in its tests, driven by selenium (requirements.txt);
 #   - with WITH_FLANG=1 (`make flang`, CI), flang-16 (Debian, about 800 MB)
 #     builds TENZOR a third way;
 #   - .venv/ holds fpm and the Python packages of requirements.txt (exact pins),
@@ -21,6 +23,8 @@ command -v gerbv >/dev/null 2>&1 || apt_packages+=(gerbv)
 command -v f2c >/dev/null 2>&1 || apt_packages+=(f2c)
 command -v ftnchek >/dev/null 2>&1 || apt_packages+=(ftnchek)
 [ -f /usr/include/f2c.h ] || apt_packages+=(libf2c2-dev)
+command -v chromium >/dev/null 2>&1 || apt_packages+=(chromium)
+command -v chromedriver >/dev/null 2>&1 || apt_packages+=(chromium-driver)
 command -v gcc >/dev/null 2>&1 || apt_packages+=(gcc)
 if [ "${WITH_FLANG:-0}" = 1 ]; then
     command -v flang-new-16 >/dev/null 2>&1 || apt_packages+=(flang-16)

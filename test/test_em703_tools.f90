@@ -10,6 +10,8 @@ program test_em703_tools
     use base_text, only: text_t, str, fixed, mm, octal, parse_mm, parse_real
     use em703_codec, only: frame_t, tape_t, decode_tape, encode_tape, frame_text, tape_text, &
                            on_circle
+    use em703_html, only: html_job, json_string
+    use em703_sim, only: simulate_image
     use em703_sim, only: run_t, seg_t, simulate, field_check, run_segments, seg_box, SEG_ARC, &
                          SEG_LINE, SEG_DOT, SEG_TRAVEL, SEG_RAISE, PI
     use em703_svg, only: svg_run
@@ -34,6 +36,7 @@ program test_em703_tools
     call test_sim_dots_and_field()
     call test_sim_cycles_are_not_unrolled()
     call test_svg()
+    call test_html()
     call test_gcode()
     call test_gcode_chords()
     call test_gerber()
@@ -379,6 +382,60 @@ contains
         call check(index(s, 'stroke-dasharray') > 0, 'travel dashed')
         call check(s(len(s) - 6:) == '</svg>' // achar(10), 'svg closed')
     end subroutine test_svg
+
+    !> The page of a job: the job's data, each tape's frames (seven numbers a
+    !> frame, the last the rows since the previous frame's first row) and rows
+    !> (base-32 letters), names escaped for JSON inside a <script> element.
+    subroutine test_html()
+        type(frame_t) :: f(3)
+        type(run_t) :: runs(3)
+        type(job_t) :: job
+        type(error_t), allocatable :: err
+        type(text_t) :: page
+        integer, allocatable :: rows(:)
+        character(len=:), allocatable :: s, bytes
+        integer :: l, i
+        f(1) = fr(0, 0, 300, 400, 8, 10)
+        f(2) = fr(0, 0, 100, -400, 0, 10)
+        f(3) = fr(0, 0, -3200, 0, 0, 20)
+        job%name = 'SAW<1>'
+        job%title = 'a "saw"'
+        job%code = '8'
+        job%start_x = 1000
+        job%start_y = 2050
+        do l = 1, 3
+            job%layers(l)%key = trim(merge('small', 'large', l == 1))
+            if (l == 3) job%layers(l)%key = 'cond'
+            job%layers(l)%tape = 'SAW-' // job%layers(l)%key // '.ptp'
+            job%layers(l)%tool = 40
+            if (l == 1) then
+                call encode_tape(f, '8', 20, rows, err)
+            else
+                call encode_tape(f(1:0), '8', 20, rows, err)
+            end if
+            allocate(character(len=size(rows)) :: bytes)
+            do i = 1, size(rows)
+                bytes(i:i) = achar(rows(i))
+            end do
+            call simulate_image(bytes, '8', runs(l), err)
+            call check(.not. allocated(err), 'html: the tape decodes')
+        end do
+        call html_job(job, runs, page)
+        s = page%value()
+        call check(s(1:15) == '<!DOCTYPE html>', 'html: the page starts with its doctype')
+        call check(index(s, '<title>EM-703 job SAW&lt;1&gt;</title>') > 0, 'html: title escaped')
+        call check(index(s, '{"name":"SAW\u003c1>","job":"a \"saw\"","code":"8","scale":"1:1",' // &
+            '"start":["10.00","20.50"],"tapes":["small","large","cond"]}') > 0, 'html: the job')
+        call check(index(s, '"gm":[21,59],"frames":3,"executed":17,') > 0, 'html: GM rows, counts')
+        call check(index(s, '"f":[0,0,300,400,8,10,1,0,0,100,-400,0,10,14,0,0,-3200,0,0,20,13]') > 0, &
+                   'html: the frames, seven numbers each')
+        call check(index(s, '"r":"' // repeat('0', 20) // 'vg300h400o8e10fg100hc400e10fgc3200e20fv' &
+                   // repeat('0', 20) // '"}') > 0, &
+                   'html: the rows in base 32')
+        call check(index(s, '"gm":[21,22],"frames":0,"executed":0,') > 0, 'html: an empty tape')
+        call check(s(len(s) - 7:) == '</html>' // achar(10), 'html: the page is closed')
+        call check(json_string('a<"\' // achar(10)) == '"a\u003c\"\\\u000a"', 'json_string')
+    end subroutine test_html
 
     subroutine test_gcode()
         type(frame_t) :: f(5)

@@ -25,7 +25,7 @@ module em703_cli
     !> What the command line asks for. Unused fields keep their defaults,
     !> which are the subcommands' defaults.
     type, public :: cli_t
-        character(len=:), allocatable :: command    !< list, sim, svg, gcode, gerber, drill, punch, view, split
+        character(len=:), allocatable :: command    !< list, sim, svg, gcode, gerber, drill, punch, view, split, html
         character(len=:), allocatable :: file       !< the one file argument
         character(len=:), allocatable :: out        !< -o FILE ('' = the default)
         !> --code: a tape code (list, sim: 8, K or auto; view: auto, em703, iso or
@@ -50,9 +50,9 @@ module em703_cli
     integer(int64), parameter :: FIELD_UNITS = nint(FIELD_MM * 100, int64), MAX_TOOL = 2000
 
     !> The options of each subcommand, besides -h and --help.
-    character(len=*), parameter :: SUBCOMMANDS(9) = [character(len=6) :: &
-        'list', 'sim', 'svg', 'gcode', 'gerber', 'drill', 'punch', 'view', 'split']
-    character(len=*), parameter :: OPTIONS(9) = [character(len=40) :: &
+    character(len=*), parameter :: SUBCOMMANDS(10) = [character(len=6) :: &
+        'list', 'sim', 'svg', 'gcode', 'gerber', 'drill', 'punch', 'view', 'split', 'html']
+    character(len=*), parameter :: OPTIONS(10) = [character(len=40) :: &
         '--utf8 --bare --code', &
         '--scale --start --svg --tool --code', &
         '-o --output', &
@@ -61,7 +61,8 @@ module em703_cli
         '-o --output', &
         '-o --output --code', &
         '--code --rows', &
-        '--max']
+        '--max', &
+        '-o --output']
 
 contains
 
@@ -114,7 +115,7 @@ contains
         select case (cli%command)
         case ('list', 'sim', 'view')
             call need_file(cli%command, cli%file, 'TAPE')
-        case ('svg', 'gerber', 'drill')
+        case ('svg', 'gerber', 'drill', 'html')
             call need_file(cli%command, cli%file, 'JOB (a job sheet NAME.job)')
         case ('gcode')
             call need_file(cli%command, cli%file, 'TAPE or JOB')
@@ -313,6 +314,22 @@ contains
             '  --max N   the most pulses of one frame (default 9999)', &
             '', &
             'Exit status: 0 done, 2 usage error.'])
+        case ('html')
+            call put([character(len=78) :: &
+            'usage: em703 html JOB [-o FILE]', &
+            '', &
+            'Writes one self-contained HTML page (scripts, styles and data inline; it', &
+            'opens from disk and fetches nothing) that runs the tapes of a job sheet', &
+            '(NAME.job) on an animated coordinatograph: the punched tape scrolling', &
+            'under the reader, the field with the drawing as it forms, the machine''s', &
+            'state (X, Y, tool, K, cycle, frames, drawn and travel mm, minutes), and', &
+            'play (x1 to x1000), pause, step, jump and the choice of tape. Each tape', &
+            'runs alone from the start point, as em703 sim runs it. The page''s state', &
+            'is also a JavaScript interface: window.em703 (docs/TOOLS.md).', &
+            '', &
+            '  -o FILE   write the page to FILE (default: standard output)', &
+            '', &
+            'Exit status: 0 done, 1 a bad job sheet or tape, 2 usage or I/O error.'])
         case ('list')
             call put([character(len=78) :: &
             'usage: em703 list TAPE [--utf8] [--code 8|K|auto] [--bare]', &
@@ -450,6 +467,7 @@ contains
             '  drill JOB [-o FILE]                  Excellon: a hit per pad, tour order', &
             '  punch --code iso|eia [-o TAPE] FILE  punch text on ISO or EIA tape', &
             '  view TAPE                            a picture of a punched tape', &
+            '  html JOB [-o FILE]                   the job on an animated machine', &
             '  split [--max N] DX DY                a long move split into frames', &
             '  --version                            the version', &
             '', &

@@ -20,10 +20,11 @@ module em703_commands
     use em703_punch, only: punch_text
     use em703_view, only: view_tape, guess_code
     use em703_split, only: frames_needed, split_frame
+    use em703_html, only: html_job
     implicit none
     private
     public :: run_list, run_sim, run_svg, run_gcode, run_gerber, run_drill, run_punch, run_view, &
-              run_split
+              run_split, run_html
 
     integer, parameter, public :: EXIT_OK = 0, EXIT_INPUT = 1, EXIT_USAGE = 2
 
@@ -496,6 +497,37 @@ contains
         s2 = close_output(out, text, tmp)
         if (s2 /= EXIT_OK) status = s2
     end function run_drill
+
+    !> em703 html: one page that runs the tapes of a job on an animated
+    !> coordinatograph. Every tape is decoded and run (each alone from the
+    !> start point, as em703 sim runs it) before the page is opened, so a
+    !> bad tape stops the command at its row and leaves no page.
+    integer function run_html(path, out) result(status)
+        character(len=*), intent(in) :: path, out
+        type(job_t) :: job
+        type(run_t) :: runs(NLAYERS)
+        type(error_t), allocatable :: err
+        type(text_t) :: text
+        character(len=:), allocatable :: tmp
+        integer :: l, s2
+        call read_job(path, job, err)
+        if (allocated(err)) then
+            call say(error_text(err))
+            status = merge(EXIT_USAGE, EXIT_INPUT, err%at == 0 .and. &
+                           index(err%message, 'cannot ') == 1)
+            return
+        end if
+        call remember_input(path)
+        do l = 1, NLAYERS
+            call load_run(job%layers(l)%path, job%code, runs(l), status, job%layers(l), path)
+            if (status /= EXIT_OK) return
+        end do
+        status = open_output(out, text, tmp)
+        if (status /= EXIT_OK) return
+        call html_job(job, runs, text)
+        s2 = close_output(out, text, tmp)
+        if (s2 /= EXIT_OK) status = s2
+    end function run_html
 
     ! ------------------------------------------------------------------
     !> em703 punch: text onto an ISO 7-bit or EIA RS-244 tape image.

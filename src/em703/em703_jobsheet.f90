@@ -1,6 +1,6 @@
 !> The job sheet TENZOR writes beside the tapes of a package (docs/FILES.md):
 !> `key = value` lines, `#` comment lines. The em703 tools read the name, the
-!> code, the scale, the start point and, for each tape T in small, large,
+!> job's own name (html's heading), the code, the scale, the start point and, for each tape T in small, large,
 !> cond, its file `T.tape` (relative to the job sheet's directory) and its
 !> tool `T.tool_mm`, and when TENZOR recorded them, its size `T.bytes` and
 !> SHA-256 `T.sha256`, which the tools check. Other keys are ignored.
@@ -29,6 +29,7 @@ module em703_jobsheet
     type :: job_t
         character(len=:), allocatable :: path
         character(len=:), allocatable :: name
+        character(len=:), allocatable :: title    !< the job's name (key job; "" without one)
         character(len=:), allocatable :: code     !< "8", "K" or "auto" (no code line)
         integer :: num = 1, den = 1               !< scale num:den
         integer(int64) :: start_x = 0, start_y = 0  !< start point on the field, 0.01 mm
@@ -49,6 +50,7 @@ contains
 
         job%path = path
         job%name = ''
+        job%title = ''
         job%code = 'auto'
         do l = 1, NLAYERS
             job%layers(l)%key = trim(LAYER_KEYS(l))
@@ -88,6 +90,8 @@ contains
             select case (key)
             case ('name')
                 job%name = value
+            case ('job')
+                job%title = value
             case ('code')
                 if (value /= '8' .and. value /= 'K') then
                     call fail('code must be 8 or K, not "' // value // '"')

@@ -13,7 +13,7 @@ from harness.tape import Frame, encode
 
 from harness.tests.helpers import run
 
-SUBCOMMANDS = ["list", "sim", "svg", "gcode", "gerber", "punch", "view"]
+SUBCOMMANDS = ["list", "sim", "svg", "gcode", "gerber", "punch", "view", "html"]
 
 
 def one_line(proc) -> str:
@@ -59,6 +59,9 @@ def test_help(em703_exe) -> None:
     (["punch", "--code", "ascii", "a.txt"], "--code takes iso or eia"),
     (["view", "a.ptp", "--rows", "5:2"], "--rows takes FIRST:LAST"),
     (["view", "a.ptp", "--code", "baudot"], "--code takes auto, em703, iso or eia"),
+    (["html"], "missing JOB"),
+    (["html", "a.job", "--utf8"], "unknown option --utf8"),
+    (["html", "a.job", "-o"], "option -o needs a value"),
 ])
 def test_usage_errors_are_one_line_with_status_2(em703_exe, args, words) -> None:
     proc = run(em703_exe, *args, check=2)
@@ -67,7 +70,7 @@ def test_usage_errors_are_one_line_with_status_2(em703_exe, args, words) -> None
     assert proc.stdout == b""
 
 
-@pytest.mark.parametrize("sub", ["list", "sim", "svg", "gcode", "gerber", "view"])
+@pytest.mark.parametrize("sub", ["list", "sim", "svg", "gcode", "gerber", "view", "html"])
 def test_missing_and_unreadable_files_are_status_2(em703_exe, tmp_path, sub) -> None:
     missing = tmp_path / "nothing.job"
     line = one_line(run(em703_exe, sub, missing, check=2))
@@ -79,7 +82,7 @@ def test_missing_and_unreadable_files_are_status_2(em703_exe, tmp_path, sub) -> 
 def test_unwritable_output_is_status_2(em703_exe, example_jobs, tmp_path) -> None:
     job = example_jobs[0]
     target = tmp_path / "no" / "such" / "dir" / "x.out"
-    for sub in ("svg", "gcode", "gerber"):
+    for sub in ("svg", "gcode", "gerber", "html"):
         line = one_line(run(em703_exe, sub, job, "-o", target, check=2))
         assert line.startswith(f"{target}: cannot write")
     src = tmp_path / "p.ngc"
@@ -106,7 +109,7 @@ def test_a_bad_job_sheet_is_status_1_naming_the_line(em703_exe, example_jobs, tm
     lines = job.read_text().splitlines()
     bad = tmp_path / "bad.job"
     bad.write_text("\n".join(lines[:3] + ["scale: 1:1"] + lines[3:]) + "\n")
-    for sub in ("svg", "gcode", "gerber"):
+    for sub in ("svg", "gcode", "gerber", "html"):
         line = one_line(run(em703_exe, sub, bad, check=1))
         assert line == f'{bad}: line 4: not a "key = value" line: "scale: 1:1"'
     no_tool = tmp_path / "no_tool.job"
@@ -140,7 +143,7 @@ def test_outputs_are_the_same_bytes_every_run(em703_exe, example_tapes, example_
                                               tmp_path) -> None:
     for job in example_jobs[:3]:
         for sub, extra in (("svg", []), ("gcode", []), ("gcode", ["--chords", "0.01"]),
-                           ("gcode", ["--z"]), ("gerber", [])):
+                           ("gcode", ["--z"]), ("gerber", []), ("html", [])):
             a, b = tmp_path / "a", tmp_path / "b"
             run(em703_exe, sub, job, *extra, "-o", a, check=0)
             run(em703_exe, sub, job, *extra, "-o", b, check=0)
@@ -166,6 +169,8 @@ def _copy_package(job: Path, to: Path) -> Path:
                                   ("gcode", "{job}", "-o", "{small}"),
                                   ("svg", "{job}", "-o", "{cond}"),
                                   ("gerber", "{job}", "-o", "{large}"),
+                                  ("html", "{job}", "-o", "{job}"),
+                                  ("html", "{job}", "-o", "{cond}"),
                                   ("sim", "{small}", "--svg", "{small}"),
                                   ("gcode", "{small}", "-o", "{small}")])
 def test_an_output_over_its_own_input_is_refused(em703_exe, example_jobs, tmp_path,
@@ -189,7 +194,7 @@ def test_punch_over_its_own_input_is_refused(em703_exe, tmp_path) -> None:
     assert src.read_text() == "G00 X1\n"
 
 
-@pytest.mark.parametrize("sub", ["svg", "gcode", "gerber"])
+@pytest.mark.parametrize("sub", ["svg", "gcode", "gerber", "html"])
 def test_a_tape_that_is_not_the_job_sheets_is_refused(em703_exe, example_jobs, tmp_path,
                                                       sub) -> None:
     """The job sheet records each tape's size and SHA-256: a tape of another

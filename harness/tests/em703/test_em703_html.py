@@ -1,0 +1,279 @@
+"""`em703 html`: the page runs in a real browser, not only read as text.
+
+Debian's chromium, driven headless by selenium through chromium-driver (both
+installed by scripts/setup.sh), opens each page from disk. Every tape of
+every example job (the report's examples, the demo board, the seeds' decks)
+is stepped to its end through the page's interface `window.em703` and must
+give what `em703 sim` prints for it; the frame text the page shows is `em703
+list`'s, in Latin and in the report's letters; the demo page draws (a
+screenshot of its field that is not blank), plays, steps back, logs no
+error and makes no request but for its own file. A bad tape stops the
+command at its row and leaves no page.
+
+Without a browser these tests skip, saying why; under CI (CI=true) they fail.
+"""
+from __future__ import annotations
+
+import json
+import os
+import shutil
+import struct
+import subprocess
+import sys
+import tempfile
+import zlib
+from pathlib import Path
+
+import pytest
+
+from harness.tape import Frame, encode
+from harness.tests.helpers import ROOT, keys, run, write_job
+
+CHROMIUM = ("chromium", "chromium-browser", "google-chrome")
+FLAGS = ("--headless", "--no-sandbox", "--disable-gpu", "--disable-quic", "--no-first-run",
+         "--disable-background-networking", "--disable-component-update", "--disable-sync",
+         "--disable-dev-shm-usage", "--window-size=1400,1000")
+SIM_KEYS = ("executed", "end_x_mm", "end_y_mm", "drawn_mm", "travel_mm", "minutes",
+            "tool_at_end")
+
+
+def _no_browser(why: str):
+    if os.environ.get("CI"):
+        pytest.fail(f"{why}: CI needs the browser (scripts/setup.sh installs it)", pytrace=False)
+    pytest.skip(f"{why} (scripts/setup.sh installs Debian's chromium and chromium-driver)")
+
+
+@pytest.fixture(scope="module")
+def browser():
+    """A headless chromium with a fresh profile, its console and network logged."""
+    try:
+        from selenium import webdriver
+        from selenium.webdriver.chrome.service import Service
+    except ImportError:
+        _no_browser("selenium is not installed")
+    binary = next((shutil.which(name) for name in CHROMIUM if shutil.which(name)), None)
+    driver = shutil.which("chromedriver")
+    if binary is None or driver is None:
+        _no_browser("no chromium or chromedriver on PATH")
+    os.environ.setdefault("SE_OFFLINE", "true")   # selenium's manager downloads nothing
+    profile = tempfile.mkdtemp(prefix="em703-chromium-")
+    options = webdriver.ChromeOptions()
+    options.binary_location = binary
+    for flag in FLAGS:
+        options.add_argument(flag)
+    options.add_argument(f"--user-data-dir={profile}")
+    options.set_capability("goog:loggingPrefs", {"browser": "ALL", "performance": "ALL"})
+    chrome = webdriver.Chrome(options=options, service=Service(driver))
+    chrome.set_script_timeout(120)
+    try:
+        yield chrome
+    finally:
+        chrome.quit()
+        shutil.rmtree(profile, ignore_errors=True)
+
+
+def page_of(em703_exe, job: Path, out: Path) -> Path:
+    run(em703_exe, "html", job, "-o", out, check=0)
+    assert out.is_file(), out
+    return out
+
+
+def open_page(browser, page: Path) -> None:
+    browser.get(page.resolve().as_uri())
+    assert browser.execute_script("return document.readyState") == "complete"
+    assert browser.execute_script("return typeof window.em703") == "object"
+
+
+def sim_keys(em703_exe, tape: Path) -> dict[str, str]:
+    return keys(run(em703_exe, "sim", tape).stdout.decode())   # (field = left: status 1)
+
+
+def fixed(value: float, decimals: int) -> str:
+    """A number as em703 prints it (base_text's fixed: half away from zero)."""
+    scaled = int(abs(value) * 10 ** decimals + 0.5)
+    text = f"{scaled // 10 ** decimals}.{scaled % 10 ** decimals:0{decimals}d}"
+    return "-" + text if value < 0 and scaled else text
+
+
+def printed(state: dict) -> dict[str, str]:
+    """The page's state with em703 sim's keys and decimals."""
+    return {"executed": str(state["executed"]), "end_x_mm": fixed(state["x_mm"], 2),
+            "end_y_mm": fixed(state["y_mm"], 2), "drawn_mm": fixed(state["drawn_mm"], 2),
+            "travel_mm": fixed(state["travel_mm"], 2), "minutes": fixed(state["minutes"], 3),
+            "tool_at_end": state["tool"]}
+
+
+def test_the_page_module_is_what_the_script_writes() -> None:
+    """src/em703/em703_page.f90 is scripts/html_page.py's output for src/em703/page/."""
+    proc = subprocess.run([sys.executable, str(ROOT / "scripts" / "html_page.py"), "--check"],
+                          capture_output=True, text=True)
+    assert proc.returncode == 0, proc.stdout + proc.stderr
+
+
+def test_every_example_tape_runs_to_what_em703_sim_prints(em703_exe, example_jobs, browser,
+                                                          tmp_path) -> None:
+    assert len(example_jobs) >= 10
+    for n, job in enumerate(example_jobs):
+        page = page_of(em703_exe, job, tmp_path / f"{n}.html")
+        open_page(browser, page)
+        sheet = keys(job.read_text())
+        assert browser.execute_script("return em703.tapes()") == ["small", "large", "cond"]
+        for key in ("small", "large", "cond"):
+            want = sim_keys(em703_exe, job.parent / sheet[f"{key}.tape"])
+            state = browser.execute_script(
+                "em703.select(arguments[0]); return em703.step(1e12)", key)
+            assert state["tape"] == key and state["done"] is True
+            assert state == browser.execute_script("return em703.state()")
+            got = printed(state)
+            assert {k: got[k] for k in SIM_KEYS} == {k: want[k] for k in SIM_KEYS}, (job, key)
+            assert state["total"] == state["executed"]
+
+
+def test_the_frame_text_is_em703_lists_in_both_alphabets(em703_exe, example_jobs, browser,
+                                                         tmp_path) -> None:
+    for n, job in enumerate(example_jobs[:8]):
+        page = page_of(em703_exe, job, tmp_path / f"{n}.html")
+        open_page(browser, page)
+        sheet = keys(job.read_text())
+        for key in ("small", "large", "cond"):
+            tape = job.parent / sheet[f"{key}.tape"]
+            for utf8 in (False, True):
+                args = ["list", "--bare", tape] + (["--utf8"] if utf8 else [])
+                want = run(em703_exe, *args, check=0).stdout.decode("utf-8").splitlines()[1:-1]
+                got = browser.execute_script(
+                    "em703.select(arguments[0]); em703.setCyrillic(arguments[1]);"
+                    "var s = em703.state(), out = [];"
+                    "for (var i = 1; i <= s.frames; i++) out.push(em703.frameText(i));"
+                    "em703.setCyrillic(false); return out;", key, utf8)
+                assert got == want, (tape, utf8)
+
+
+def test_steps_count_every_pass_of_a_cycle_and_seek_goes_back(em703_exe, tmp_path,
+                                                              browser) -> None:
+    """The report's Example 5 (a saw: one frame pair run 8 times) and a tape of
+    arcs: step(n) runs n executed frames, in any chunks, and seek(n) reaches
+    the same state going back as going forward."""
+    saw = encode([Frame(dx=300, dy=400, cyc=8, k=10), Frame(dx=100, dy=-400, k=10),
+                  Frame(dx=-3200, k=20)])
+    arcs = encode([Frame(x=2000, dx=-2000, dy=-2000, k=13), Frame(y=-500, k=11),
+                   Frame(dx=2000, dy=2000, k=20)])
+    job = write_job(tmp_path, "STEPS", {"small": saw, "cond": arcs}, {"small": "0.40"})
+    page = page_of(em703_exe, job, tmp_path / "steps.html")
+    open_page(browser, page)
+    seen = browser.execute_script(
+        "em703.select('small'); var out = [];"
+        "for (var i = 0; i < 17; i++) out.push(em703.step(1)); return out;")
+    assert [s["executed"] for s in seen] == list(range(1, 18))
+    assert [s["pass"] for s in seen[:16]] == [p for p in range(1, 9) for _ in (0, 1)]
+    assert [s["passes"] for s in seen[:16]] == [8] * 16
+    assert [s["frame"] for s in seen] == [1, 2] * 8 + [3]
+    assert [s["tool"] for s in seen] == ["down"] * 16 + ["up"]
+    assert (seen[0]["x_mm"], seen[0]["y_mm"]) == (3.0, 4.0)
+    assert (seen[15]["x_mm"], seen[15]["y_mm"]) == (32.0, 0.0)
+    assert seen[-1]["done"] and printed(seen[-1])["drawn_mm"] == "72.98"
+    chunks = browser.execute_script(
+        "em703.select('small'); em703.step(3); em703.step(0); em703.step(5);"
+        "return em703.step(100);")
+    assert chunks == seen[-1]
+    back = browser.execute_script("return [em703.seek(5), em703.seek(16), em703.seek(5)];")
+    assert back[0] == seen[4] and back[1] == seen[15] and back[2] == seen[4]
+    arcs_end = browser.execute_script("em703.select('cond'); return em703.step(10);")
+    want = sim_keys(em703_exe, tmp_path / "STEPS-cond.ptp")
+    assert {k: printed(arcs_end)[k] for k in SIM_KEYS} == {k: want[k] for k in SIM_KEYS}
+    empty = browser.execute_script("em703.select('large'); return em703.step(5);")
+    assert empty["executed"] == 0 and empty["done"] and empty["tool"] == "up"
+
+
+def _png_pixels(png: bytes) -> tuple[int, int, list[bytes]]:
+    """Width, height and the unfiltered rows (RGB or RGBA, 8 bits) of a PNG."""
+    assert png[:8] == b"\x89PNG\r\n\x1a\n"
+    pos, data, width = 8, b"", 0
+    while pos < len(png):
+        length, kind = struct.unpack(">I4s", png[pos:pos + 8])
+        body = png[pos + 8:pos + 8 + length]
+        if kind == b"IHDR":
+            width, height, depth, colour = struct.unpack(">IIBB", body[:10])
+            assert depth == 8 and colour in (2, 6), (depth, colour)
+            bpp = 3 if colour == 2 else 4
+        elif kind == b"IDAT":
+            data += body
+        pos += 12 + length
+    raw = zlib.decompress(data)
+    stride = width * bpp
+    rows, prev = [], bytearray(stride)
+    for y in range(height):
+        kind, line = raw[y * (stride + 1)], bytearray(raw[y * (stride + 1) + 1:(y + 1) * (stride + 1)])
+        for i in range(stride):
+            a = line[i - bpp] if i >= bpp else 0
+            b = prev[i]
+            c = prev[i - bpp] if i >= bpp else 0
+            if kind == 1:
+                line[i] = (line[i] + a) & 255
+            elif kind == 2:
+                line[i] = (line[i] + b) & 255
+            elif kind == 3:
+                line[i] = (line[i] + (a + b) // 2) & 255
+            elif kind == 4:
+                p = a + b - c
+                pa, pb, pc = abs(p - a), abs(p - b), abs(p - c)
+                line[i] = (line[i] + (a if pa <= pb and pa <= pc else b if pb <= pc else c)) & 255
+        rows.append(bytes(line[::bpp]))          # the red channel is enough
+        prev = line
+    return width, height, rows
+
+
+def test_the_demo_page_draws_plays_and_fetches_nothing(em703_exe, example_jobs, browser,
+                                                       tmp_path) -> None:
+    job = next(j for j in example_jobs if j.name == "LOGIC-CARD-A.job")
+    page = page_of(em703_exe, job, tmp_path / "demo.html")
+    text = page.read_text(encoding="utf-8")
+    assert "http://" not in text and "https://" not in text and " src=" not in text
+    browser.get_log("browser")
+    browser.get_log("performance")
+    open_page(browser, page)
+    # playing at x1000: the carriage moves on its own, frame after frame
+    first = browser.execute_script("em703.select('small'); em703.play(1000); return em703.state()")
+    browser.execute_async_script(
+        "var done = arguments[0]; setTimeout(function () { done(); }, 1500);")
+    moving = browser.execute_script("var s = em703.state(); em703.pause(); return s;")
+    assert first["executed"] == 0 and 0 < moving["executed"], moving
+    state = browser.execute_script("return em703.step(1e9)")
+    assert state["done"]
+    field = browser.find_element("id", "field")
+    width, height, red = _png_pixels(field.screenshot_as_png)
+    drawn = sum(1 for row in red for v in row if v < 128)
+    assert drawn > 0.005 * width * height, (drawn, width, height)
+    strip = browser.find_element("id", "strip").text
+    assert "GM" in strip and "KK" in strip and "|o o o . o o    | 037   GM" in strip
+    errors = [e for e in browser.get_log("browser") if e["level"] in ("SEVERE", "WARNING")]
+    assert not errors, errors
+    urls = set()
+    for entry in browser.get_log("performance"):
+        message = json.loads(entry["message"])["message"]
+        if message["method"] == "Network.requestWillBeSent":
+            urls.add(message["params"]["request"]["url"])
+    assert urls == {page.resolve().as_uri()}, urls
+
+
+def test_a_bad_tape_stops_at_its_row_and_leaves_no_page(em703_exe, tmp_path) -> None:
+    good = encode([Frame(dx=500, k=10), Frame(dx=-500, k=20)])
+    bad = bytearray(good)
+    bad[25] = 0o33                            # a row outside the code
+    job = write_job(tmp_path, "BAD", {"small": good, "cond": bytes(bad)}, {})
+    out = tmp_path / "bad.html"
+    proc = run(em703_exe, "html", job, "-o", out, check=1)
+    assert proc.stderr.decode() == f"{tmp_path}/BAD-cond.ptp: row 26: code 33 (octal) is not " \
+                                   "an EM-703 code\n"
+    assert not out.exists()
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["BAD-cond.ptp", "BAD-large.ptp",
+                                                          "BAD-small.ptp", "BAD.job"]
+
+
+def test_names_are_escaped_in_the_page(em703_exe, tmp_path) -> None:
+    job = write_job(tmp_path, "ODD", {}, {})
+    text = job.read_text().replace("name = ODD", 'name = A</script><b>"\\')
+    job.write_text(text + "job = X & <Y>\n")
+    page = run(em703_exe, "html", job, check=0).stdout.decode()
+    assert page.count("</script>") == page.count("<script")
+    assert '"name":"A\\u003c/script>\\u003cb>\\"\\\\"' in page
+    assert "<title>EM-703 job A&lt;/script&gt;&lt;b&gt;\"\\</title>" in page
