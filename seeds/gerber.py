@@ -53,7 +53,7 @@ START_MM = (10.0, 10.0)
 #: how far an arc's chords may stray from it (mm)
 CHORD_TOL = 0.005
 #: how far a filled outline's strokes may be simplified (mm)
-SIMPLIFY_MM = 0.003
+SIMPLIFY_MM = 0.004
 #: the narrowest feature the deck can hold (one unit of 0.01 mm)
 MIN_FEATURE_MM = 0.01
 #: pads up to this size go on the small-pad tape (TENZOR's default DMAX)
@@ -170,14 +170,14 @@ def prim_geom(p) -> BaseGeometry:
     """A gerbonara graphic primitive (in mm) as a shapely area."""
     from gerbonara import graphic_primitives as gp
     if isinstance(p, gp.Circle):
-        return Point(p.x, p.y).buffer(p.r, quad_segs=32)
+        return Point(p.x, p.y).buffer(p.r, quad_segs=16)
     if isinstance(p, gp.Line):
         if math.hypot(p.x2 - p.x1, p.y2 - p.y1) < 1e-9:
-            return Point(p.x1, p.y1).buffer(p.width / 2, quad_segs=32)
-        return LineString([(p.x1, p.y1), (p.x2, p.y2)]).buffer(p.width / 2, quad_segs=32)
+            return Point(p.x1, p.y1).buffer(p.width / 2, quad_segs=16)
+        return LineString([(p.x1, p.y1), (p.x2, p.y2)]).buffer(p.width / 2, quad_segs=16)
     if isinstance(p, gp.Arc):
         pts, _, _ = _arc_points(p.x1, p.y1, p.x2, p.y2, p.cx, p.cy, p.clockwise, tol=0.001)
-        return LineString(pts).buffer(p.width / 2, quad_segs=32)
+        return LineString(pts).buffer(p.width / 2, quad_segs=16)
     if isinstance(p, gp.Rectangle):
         poly = p.to_arc_poly()
         return Polygon(poly.outline).buffer(0)
@@ -232,7 +232,7 @@ class Conversion:
     origin: tuple[float, float] = (0.0, 0.0)               # mm, the start point
     size: tuple[float, float] = (0.0, 0.0)                 # mm
     notes: list[str] = field(default_factory=list)
-    copper: BaseGeometry | None = None                      # the copper, board mm
+    copper: object = None            # STRtree of the dark objects' outlines, board mm
 
 
 def _components(g: BaseGeometry) -> list[Polygon]:
@@ -254,34 +254,85 @@ def _rings_of(g: BaseGeometry) -> list[list[tuple[float, float]]]:
     return out
 
 
-def fill_rings(poly: BaseGeometry, tool_mm: float) -> list[list[tuple[float, float]]]:
-    """Closed centre lines of a tool of tool_mm that fill poly within reach.
+#: big outlines are hatched band by band (mm): each band's intersections stay small
+BAND_MM = 4.0
 
-    The region eroded by the tool's radius r is the set the tool's centre may
-    visit without drawing outside. Its boundary is the first ring; each next
-    ring is the boundary of the region eroded by a further step s = 2r' (r' =
-    r - 0.01 mm, so neighbouring passes overlap by 0.02 mm, two rounding
-    units). Where a part of a level vanishes before the next ring reaches it
-    (a thin arm, the middle of a narrow strip), the points no ring comes
-    within r' of, U = (level eroded by r') minus (next level grown by r'),
-    get a ring of their own: every point of U is within r' of U's boundary.
+
+def fill_rings(poly: BaseGeometry, tool_mm: float) -> list[list[tuple[float, float]]]:
+    """Centre lines of a tool of tool_mm that fill poly within its reach.
+
+    E, the outline eroded by the tool's radius r, is where the tool's centre
+    may go without drawing outside. Its boundary (every ring) is drawn, and E
+    is hatched by horizontal lines s = 2r' apart (r' = r - 0.01 mm: passes
+    overlap by 0.02 mm, two rounding units). A point p of E is within s/2 of
+    a hatch line; the vertical segment from p to it either stays in E (the
+    line's stroke covers p) or crosses E's boundary within s/2 (the boundary
+    stroke covers p); a point outside E that a disc of radius r inside the
+    outline reaches is within r of E's boundary. So the strokes cover the
+    outline opened by the tool and draw nothing outside it. Neighbouring
+    hatch segments are joined into one zig-zag conductor where the link
+    between them stays in E.
     """
     r = tool_mm / 2
     rp = max(r - 0.01, r * 0.6)
     s = 2 * rp
-    rings: list[list[tuple[float, float]]] = []
-    level = poly.buffer(-r, quad_segs=8)
-    while not level.is_empty:
-        rings += _rings_of(level)
-        nxt = level.buffer(-s, quad_segs=8)
-        inner = level.buffer(-rp, quad_segs=8)
-        if not inner.is_empty:
-            reach = nxt.buffer(rp, quad_segs=8) if not nxt.is_empty else Polygon()
-            rest = inner.difference(reach) if not reach.is_empty else inner
-            if not rest.is_empty and rest.area > 1e-6:
-                rings += _rings_of(rest)
-        level = nxt
-    return rings
+    E = poly.buffer(-r, quad_segs=8)
+    if E.is_empty:
+        return []
+    strokes = _rings_of(E)
+    x0, y0, x1, y1 = E.bounds
+    n = max(1, math.ceil((y1 - y0) / s))
+    ys = [y0 + ((y1 - y0) - (n - 1) * s) / 2 + k * s for k in range(n)]
+    nb = max(1, math.ceil((y1 - y0) / BAND_MM))
+    bands = [box(x0 - 1, y0 + i * (y1 - y0) / nb - s, x1 + 1, y0 + (i + 1) * (y1 - y0) / nb + s)
+             for i in range(nb)] if nb > 1 else [None]
+    for i, band in enumerate(bands):
+        part = E if band is None else E.intersection(band)
+        lo = y0 + i * (y1 - y0) / nb
+        hi = y0 + (i + 1) * (y1 - y0) / nb
+        mine = [y for y in ys if (band is None) or (lo <= y < hi or (i == nb - 1 and y >= hi))]
+        if not mine or part.is_empty:
+            continue
+        lines = [LineString([(x0 - 1, y), (x1 + 1, y)]) for y in mine]
+        cuts = shapely.intersection(part, lines)
+        shapely.prepare(part)
+        rows: list[list[tuple[float, float]]] = []
+        for cut in cuts:
+            segs = []
+            for g in ([cut] if isinstance(cut, LineString) else getattr(cut, "geoms", [])):
+                if isinstance(g, LineString) and g.length > 1e-6:
+                    (ax, ay), (bx, by) = g.coords[0], g.coords[-1]
+                    segs.append((min(ax, bx), max(ax, bx), ay))
+            segs.sort()
+            rows.append(segs)
+        strokes += _zigzag(rows, part, s)
+    return strokes
+
+
+def _zigzag(rows, part: BaseGeometry, s: float) -> list[list[tuple[float, float]]]:
+    """Hatch segments, row by row, joined into zig-zags where the link stays in part."""
+    done: list[list[tuple[float, float]]] = []
+    open_: list[list[tuple[float, float]]] = []     # chains ending on the previous row
+    for segs in rows:
+        nxt: list[list[tuple[float, float]]] = []
+        for xa, xb, y in segs:
+            best, bi, flip = None, -1, False
+            for k, ch in enumerate(open_):
+                ex, ey = ch[-1]
+                for fl, sx in ((False, xa), (True, xb)):
+                    d = abs(sx - ex)
+                    if d <= 4 * s and (best is None or d < best):
+                        best, bi, flip = d, k, fl
+            a, b = ((xb, y), (xa, y)) if flip else ((xa, y), (xb, y))
+            if bi >= 0 and part.covers(LineString([open_[bi][-1], a])):
+                ch = open_.pop(bi)
+                ch += [a, b]
+                nxt.append(ch)
+            else:
+                nxt.append([a, b])
+        done += open_
+        open_ = nxt
+    return done + open_
 
 
 def _axis_rect(g: BaseGeometry) -> tuple[float, float, float, float] | None:
@@ -331,25 +382,15 @@ def convert(g, holes: Sequence[Hole] = (), tools: tuple[float, float, float] | N
             if j > i:
                 cut_of.setdefault(i, []).append(j)
 
-    # The copper as a whole (for the hole check and the tests' reference).
-    copper: BaseGeometry = Polygon()
-    runs: list[tuple[bool, list[BaseGeometry]]] = []
-    for o, gm in zip(objs, geoms):
-        if runs and runs[-1][0] == o.polarity_dark:
-            runs[-1][1].append(gm)
-        else:
-            runs.append((o.polarity_dark, [gm]))
-    for dark, gs in runs:
-        u = shapely.union_all(gs)
-        copper = copper.union(u) if dark else copper.difference(u)
-    if copper.is_empty:
+    dark = [gm for o, gm in zip(objs, geoms) if o.polarity_dark]
+    if not dark:
         raise Refused("no dark copper in it")
+    conv = Conversion(copper=shapely.STRtree(dark))
+    x0, y0, x1, y1 = shapely.total_bounds(dark)
 
-    x0, y0, x1, y1 = copper.bounds
     for h in holes:
         x0, y0 = min(x0, h.x - h.dia / 2), min(y0, h.y - h.dia / 2)
         x1, y1 = max(x1, h.x + h.dia / 2), max(y1, h.y + h.dia / 2)
-    conv = Conversion(copper=copper)
     conv.origin = (math.floor(x0 * 100 + 1e-6) / 100, math.floor(y0 * 100 + 1e-6) / 100)
     conv.size = (x1 - conv.origin[0], y1 - conv.origin[1])
     ox, oy = conv.origin
@@ -641,11 +682,13 @@ def deck_text(conv: Conversion, name: str, holes: Sequence[Hole] = (),
 
 
 def holes_without_copper(conv: Conversion, holes: Sequence[Hole]) -> list[Hole]:
-    """The holes whose centre is not on copper."""
-    if conv.copper is None:
+    """The holes whose centre is on no dark object's outline."""
+    if conv.copper is None or not holes:
         return []
-    inside = shapely.contains_xy(conv.copper, [h.x for h in holes], [h.y for h in holes])
-    return [h for h, ok in zip(holes, inside) if not ok]
+    pts = shapely.points([(h.x, h.y) for h in holes])
+    hit = conv.copper.query(pts, predicate="intersects")
+    on = set(hit[0].tolist())
+    return [h for k, h in enumerate(holes) if k not in on]
 
 
 # ---------------------------------------------------------------------------
