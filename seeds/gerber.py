@@ -40,6 +40,7 @@ from decimal import Decimal
 from pathlib import Path
 
 import shapely
+import shapely.affinity
 from shapely.geometry import LineString, Point, Polygon, box
 from shapely.geometry.base import BaseGeometry
 
@@ -197,8 +198,18 @@ def prim_geom(p) -> BaseGeometry:
 def object_geom(o) -> BaseGeometry:
     """A graphic object's area in mm (its clear primitives taken away)."""
     from gerbonara.utils import MM
+    from gerbonara.graphic_objects import Flash
     geom: BaseGeometry = Polygon()
     dark_first = o.polarity_dark
+    if isinstance(o, Flash):
+        # a flash is its aperture drawn at 0, 0 and moved: gerbonara 1.5.0 leaves
+        # the outline primitives of some macros (OC8's polygon) at 0, 0 when it
+        # flashes them elsewhere
+        x, y = o.unit.convert_to(MM, o.x), o.unit.convert_to(MM, o.y)
+        for p in o.aperture.flash(0, 0, unit=MM, polarity_dark=o.polarity_dark):
+            g = shapely.affinity.translate(prim_geom(p), x, y)
+            geom = geom.union(g) if p.polarity_dark == dark_first else geom.difference(g)
+        return geom
     for p in o.to_primitives(MM):
         g = prim_geom(p)
         # a primitive's polarity is relative to its object's
