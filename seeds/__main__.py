@@ -11,12 +11,14 @@ import argparse
 import sys
 from collections.abc import Callable, Sequence
 
-from . import seed001, seed002, seed003, seed004
+from . import gerber, seed001, seed002, seed003, seed004, tapereport
 
 #: name -> function adding the subcommand's parser, in the documents' order.
 SUBCOMMANDS: dict[str, Callable[[argparse._SubParsersAction], None]] = {
     "dxf2deck": seed001.add_dxf2deck,
     "dxfboard": seed001.add_dxfboard,
+    "gerber2deck": gerber.add_gerber2deck,
+    "tapereport": tapereport.add_tapereport,
     "profile": seed002.add_profile,
     "equidistant": seed002.add_equidistant,
     "punch5121": seed002.add_punch5121,
