@@ -5,9 +5,11 @@
 !> TENZOR fills a pad with passes around its centre: concentric circles for
 !> a round pad, concentric rectangles for a rectangular one, a dot for a pad
 !> as wide as the tool; a row of pads is drawn pass by pass along the row.
-!> Each run of segments drawn with the tool down (between two raises) is one
-!> pass or one pad; its centre is the centre of its box, and the passes with
-!> one centre on one tape are one pad. Its size: a round pad's diameter is
+!> Each run of segments drawn with the tool down (between two raises) is a
+!> pass; a pass that draws a circle or a dot belongs to the pad of its
+!> centre (the centre of its box), so that overlapping holes stay apart;
+!> passes of straight strokes only (the sides of rectangular pads in a row)
+!> belong together when they overlap. Its size: a round pad's diameter is
 !> the widest circle's plus the tool, a dot's the tool; a rectangular pad's
 !> hole is its shorter side (the largest round hole it holds). The hits come
 !> in the order the tape first reaches each pad: the small-pad tape's, then
@@ -39,14 +41,19 @@ module em703_drill
     type :: pass_t
         real(real64) :: box(4) = 0
         integer :: parent = 0
+        logical :: centred = .false.     !< it draws a circle or a dot: its centre is its pad's
+        integer(int64) :: x2 = 0, y2 = 0 !< its centre, half units
     end type pass_t
 
 contains
 
     !> The holes of one tape (a run), in the order the tape first reaches
-    !> each pad; tool: the tape's tool width, units. A pad is the drawn copper
-    !> that hangs together: passes whose boxes, widened by half the tool,
-    !> overlap (not merely touch) belong to one pad.
+    !> each pad; tool: the tape's tool width, units. A pass that draws a
+    !> circle or a dot belongs to the pad of its centre (the circles of a
+    !> round pad are concentric), so that holes that overlap stay holes;
+    !> passes of straight strokes only (the sides of a rectangular pad,
+    !> drawn one by one along a row) belong together when their boxes,
+    !> widened by half the tool, overlap (not merely touch).
     subroutine find_holes(run, tool, holes, n)
         type(run_t), intent(in) :: run
         integer(int64), intent(in) :: tool
@@ -60,7 +67,7 @@ contains
         type(walker_t) :: w
         type(error_t), allocatable :: err
         type(seg_t) :: s
-        logical :: got, open
+        logical :: got, open, centred
         real(real64), allocatable :: pads(:, :)
         integer :: ncell
         cell = 4 * max(real(tool, real64), 25.0_real64)
@@ -87,7 +94,9 @@ contains
             else
                 box = b
                 open = .true.
+                centred = .false.
             end if
+            if (s%kind == SEG_ARC .or. s%kind == SEG_DOT) centred = .true.
         end do
         if (open) call close_pass()
         ! each pad's box, kept at its first pass (a root is its pad's first)
@@ -114,22 +123,46 @@ contains
             npass = npass + 1
             passes(npass)%box = box
             passes(npass)%parent = npass
-            ix0 = floor((box(1) - half) / cell)
-            ix1 = floor((box(2) + half) / cell)
-            iy0 = floor((box(3) - half) / cell)
-            iy1 = floor((box(4) + half) / cell)
+            passes(npass)%centred = centred
+            passes(npass)%x2 = nint(box(1) + box(2), int64)
+            passes(npass)%y2 = nint(box(3) + box(4), int64)
+            if (centred) then
+                ! its centre's cell: the passes of the same centre
+                ix0 = floor(real(passes(npass)%x2, real64) / 2 / cell)
+                ix1 = ix0
+                iy0 = floor(real(passes(npass)%y2, real64) / 2 / cell)
+                iy1 = iy0
+            else
+                ix0 = floor((box(1) - half) / cell)
+                ix1 = floor((box(2) + half) / cell)
+                iy0 = floor((box(3) - half) / cell)
+                iy1 = floor((box(4) + half) / cell)
+            end if
             do ix = ix0, ix1
                 do iy = iy0, iy1
                     k = find_cell(ix, iy)
                     e = head(k)
                     do while (e > 0)
-                        if (overlap(passes(member(e))%box, box, half)) call join(member(e), npass)
+                        if (belong(passes(member(e)), passes(npass), half)) call join(member(e), npass)
                         e = nxt(e)
                     end do
                     call add_entry(k, npass)
                 end do
             end do
         end subroutine close_pass
+
+        !> Do passes a and c draw one pad?
+        logical function belong(a, c, half)
+            type(pass_t), intent(in) :: a, c
+            real(real64), intent(in) :: half
+            if (a%centred .neqv. c%centred) then
+                belong = .false.
+            else if (a%centred) then
+                belong = a%x2 == c%x2 .and. a%y2 == c%y2
+            else
+                belong = overlap(a%box, c%box, half)
+            end if
+        end function belong
 
         logical function overlap(a, c, half)
             real(real64), intent(in) :: a(4), c(4), half
