@@ -30,7 +30,7 @@ program em703
     case ('view')
         status = run_view(c%file, c%code, c%first, c%last)
     case ('split')
-        status = run_split(c%move(1), c%move(2), c%max_pulses)
+        status = run_split(c%move(1), c%move(2), c%max_pulses, c%equal)
     case default
         status = 2          ! parse_command_line accepts no other subcommand
     end select

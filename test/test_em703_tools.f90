@@ -19,7 +19,7 @@ program test_em703_tools
     use em703_view, only: view_tape, guess_code
     use em703_jobsheet, only: job_t, read_job, parse_scale, machine_scale
     use base_io, only: write_text
-    use em703_split, only: split_move
+    use em703_split, only: split_move, split_equal
     use base_sha256, only: sha256_hex
     use base_files, only: write_whole, same_file
     implicit none
@@ -42,6 +42,7 @@ program test_em703_tools
     call test_view()
     call test_jobsheet()
     call test_split_seed004()
+    call test_split_equal_seed004()
     call test_text_helpers()
     call test_sha256()
     call test_whole_files()
@@ -657,6 +658,28 @@ contains
         call check(sum(dxs) == -7 .and. sum(dys) == 3 .and. all(abs(dxs) <= 2), &
                    'split: a negative move sums back and keeps the limit')
     end subroutine test_split_seed004
+
+    !> Seed 004's equal frames by continued fractions: 98132, 87647 pulses as
+    !> 11 frames of 8779, 7841 (7841/8779, a convergent of 87647/98132) and
+    !> the last 1563, 1396; the sums exact, every frame within the limit.
+    subroutine test_split_equal_seed004()
+        integer(int64) :: fx, fy, n, lx, ly
+        real(real64) :: dev
+        logical :: ok
+        call split_equal(98132_int64, 87647_int64, 9999_int64, fx, fy, n, lx, ly, dev, ok)
+        call check(ok .and. fx == 8779 .and. fy == 7841 .and. n == 11 .and. lx == 1563 .and. &
+                   ly == 1396, 'split --equal: the document''s move')
+        call check(n * fx + lx == 98132 .and. n * fy + ly == 87647, 'split --equal: sums exact')
+        call check(abs(dev - 8.3603e-5_real64) < 1.0e-8_real64, 'split --equal: the deviation')
+        call split_equal(-7_int64, 3_int64, 2_int64, fx, fy, n, lx, ly, dev, ok)
+        call check(ok .and. fx == -2 .and. fy == 1 .and. n == 3 .and. lx == -1 .and. ly == 0, &
+                   'split --equal: a negative move')
+        call split_equal(0_int64, 0_int64, 9999_int64, fx, fy, n, lx, ly, dev, ok)
+        call check(ok .and. n == 0 .and. lx == 0 .and. ly == 0, 'split --equal: no move, no frame')
+        call split_equal(600_int64, 400_int64, 9999_int64, fx, fy, n, lx, ly, dev, ok)
+        call check(ok .and. fx == 600 .and. fy == 400 .and. n == 1 .and. dev == 0, &
+                   'split --equal: a move that fits is one frame')
+    end subroutine test_split_equal_seed004
 
     !> SHA-256: the standard's test vectors, the padding's edge lengths, every
     !> byte value (the digits are those of sha256sum).

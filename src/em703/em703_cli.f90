@@ -42,6 +42,7 @@ module em703_cli
         real(real64) :: chord_tol = 0               !< gcode --chords, mm (0: arcs stay arcs)
         integer :: first = 1, last = huge(1)        !< view --rows FIRST:LAST
         integer(int64) :: max_pulses = 9999         !< split --max
+        logical :: equal = .false.                  !< split --equal
         integer(int64) :: move(2) = 0               !< split DX DY, pulses
     end type cli_t
 
@@ -61,7 +62,7 @@ module em703_cli
         '-o --output', &
         '-o --output --code', &
         '--code --rows', &
-        '--max']
+        '--max --equal']
 
 contains
 
@@ -152,6 +153,8 @@ contains
             cli%bare = .true.
         case ('--z')
             cli%use_z = .true.
+        case ('--equal')
+            cli%equal = .true.
         case ('--dialect')
             v = option_value(sub, i, nargs)
             select case (v)
@@ -302,7 +305,7 @@ contains
         select case (sub)
         case ('split')
             call put([character(len=78) :: &
-            'usage: em703 split [--max N] DX DY', &
+            'usage: em703 split [--max N] [--equal] DX DY', &
             '', &
             'Prints, one "DX DY" pair a line, the frames of a straight move of DX, DY', &
             'pulses (0.01 mm) split into as few frames of at most N pulses per axis as', &
@@ -311,8 +314,12 @@ contains
             'the start). The document''s example: em703 split --max 9999 98132 87647.', &
             '', &
             '  --max N   the most pulses of one frame (default 9999)', &
+            '  --equal   every frame equal but the last, which takes up the error: the', &
+            '            frame''s tangent by continued fractions (seed 004); a last line', &
+            '            "# ..." gives the largest distance of a division point from', &
+            '            the line, in pulses', &
             '', &
-            'Exit status: 0 done, 2 usage error.'])
+            'Exit status: 0 done, 1 no equal frames fit, 2 usage error.'])
         case ('list')
             call put([character(len=78) :: &
             'usage: em703 list TAPE [--utf8] [--code 8|K|auto] [--bare]', &
@@ -450,7 +457,7 @@ contains
             '  drill JOB [-o FILE]                  Excellon: a hit per pad, tour order', &
             '  punch --code iso|eia [-o TAPE] FILE  punch text on ISO or EIA tape', &
             '  view TAPE                            a picture of a punched tape', &
-            '  split [--max N] DX DY                a long move split into frames', &
+            '  split [--max N] [--equal] DX DY      a long move split into frames', &
             '  --version                            the version', &
             '', &
             'Exit status: 0 done, 1 the input had errors, 2 usage or I/O error.'])

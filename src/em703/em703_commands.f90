@@ -19,7 +19,7 @@ module em703_commands
     use em703_drill, only: hole_t, find_holes, drill_program
     use em703_punch, only: punch_text
     use em703_view, only: view_tape, guess_code
-    use em703_split, only: frames_needed, split_frame
+    use em703_split, only: frames_needed, split_frame, split_equal
     implicit none
     private
     public :: run_list, run_sim, run_svg, run_gcode, run_gerber, run_drill, run_punch, run_view, &
@@ -563,12 +563,43 @@ contains
     !> em703 split: the frames of the straight move (dx, dy) pulses, at most
     !> max_pulses per axis each (em703_split), one "DX DY" pair a line, each
     !> written as it is found.
-    integer function run_split(dx, dy, max_pulses) result(status)
+    integer function run_split(dx, dy, max_pulses, equal) result(status)
         integer(int64), intent(in) :: dx, dy, max_pulses
-        integer(int64) :: k, n, fx, fy
+        logical, intent(in), optional :: equal
+        integer(int64) :: k, n, fx, fy, lx, ly
+        real(real64) :: dev
+        logical :: ok
         type(text_t) :: text
-        character(len=:), allocatable :: tmp
+        character(len=:), allocatable :: tmp, line
         integer :: s2
+        if (present(equal)) then
+            if (equal) then
+                call split_equal(dx, dy, max_pulses, fx, fy, n, lx, ly, dev, ok)
+                if (.not. ok) then
+                    call say('em703 split: no equal frames of at most ' // str(max_pulses) // &
+                             ' pulses fit the move (' // str(dx) // ', ' // str(dy) // ')')
+                    status = EXIT_INPUT
+                    return
+                end if
+                s2 = open_output('', text, tmp)
+                do k = 1, n
+                    call text%add(str(fx) // ' ' // str(fy))
+                end do
+                if (lx /= 0 .or. ly /= 0) call text%add(str(lx) // ' ' // str(ly))
+                k = n + merge(1, 0, lx /= 0 .or. ly /= 0)
+                if (n > 0) then
+                    line = '# ' // str(k) // trim(merge(' frame: ', ' frames:', k == 1)) // ' ' // &
+                           str(n) // ' of ' // str(fx) // ' ' // str(fy)
+                else
+                    line = '# no frame'
+                end if
+                if (lx /= 0 .or. ly /= 0) line = line // ', the last ' // str(lx) // ' ' // str(ly)
+                call text%add(line // '; largest distance of a division point from the line ' // &
+                              fixed(dev, 6) // ' pulses')
+                status = close_output('', text, tmp)
+                return
+            end if
+        end if
         s2 = open_output('', text, tmp)
         n = frames_needed(dx, dy, max_pulses)
         do k = 1, n
