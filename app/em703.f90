@@ -5,7 +5,7 @@
 program em703
     use em703_cli, only: cli_t, parse_command_line
     use em703_commands, only: run_list, run_sim, run_svg, run_gcode, run_gerber, run_drill, &
-                              run_punch, run_view, run_split
+                              run_punch, run_view, run_split, run_check
     implicit none
 
     type(cli_t) :: c
@@ -31,6 +31,8 @@ program em703
         status = run_view(c%file, c%code, c%first, c%last)
     case ('split')
         status = run_split(c%move(1), c%move(2), c%max_pulses, c%equal)
+    case ('check')
+        status = run_check(c%file)
     case default
         status = 2          ! parse_command_line accepts no other subcommand
     end select

@@ -20,10 +20,11 @@ module em703_commands
     use em703_punch, only: punch_text
     use em703_view, only: view_tape, guess_code
     use em703_split, only: frames_needed, split_frame, split_equal
+    use em703_iso, only: iso_program, iso_check
     implicit none
     private
     public :: run_list, run_sim, run_svg, run_gcode, run_gerber, run_drill, run_punch, run_view, &
-              run_split
+              run_split, run_check
 
     integer, parameter, public :: EXIT_OK = 0, EXIT_INPUT = 1, EXIT_USAGE = 2
 
@@ -401,6 +402,7 @@ contains
         integer(int64) :: tools(NLAYERS)
         type(text_t) :: text
         character(len=:), allocatable :: tmp
+        type(error_t), allocatable :: err
         integer :: s2
         logical :: complete
         if (ends_with(path, '.job')) then
@@ -411,8 +413,13 @@ contains
                 status = s2
                 return
             end if
-            call gcode_program(runs, labels, tools, 'EM-703 job ' // job%name // ', code ' // &
-                               job%code, chord_tol, use_z, text, dialect)
+            if (dialect == 'iso-1970s') then
+                call iso_program(runs, labels, 'EM-703 job ' // job%name // ', code ' // job%code, &
+                                 chord_tol, text, err)
+            else
+                call gcode_program(runs, labels, tools, 'EM-703 job ' // job%name // ', code ' // &
+                                   job%code, chord_tol, use_z, text, dialect)
+            end if
         else
             call load_run(path, 'auto', runs(1), status)
             if (status /= EXIT_OK) return
@@ -425,9 +432,19 @@ contains
                 status = s2
                 return
             end if
-            call gcode_program(runs(1:1), labels(1:1), tools(1:1), 'EM-703 tape, code ' // &
-                               runs(1)%code // ', ' // str(runs(1)%nframes) // ' frames', &
-                               chord_tol, use_z, text, dialect)
+            if (dialect == 'iso-1970s') then
+                call iso_program(runs(1:1), labels(1:1), 'EM-703 tape, code ' // runs(1)%code // &
+                                 ', ' // str(runs(1)%nframes) // ' frames', chord_tol, text, err)
+            else
+                call gcode_program(runs(1:1), labels(1:1), tools(1:1), 'EM-703 tape, code ' // &
+                                   runs(1)%code // ', ' // str(runs(1)%nframes) // ' frames', &
+                                   chord_tol, use_z, text, dialect)
+            end if
+        end if
+        if (allocated(err)) then
+            call say(error_text(err))
+            text%message = 'abandoned'
+            status = EXIT_INPUT
         end if
         s2 = close_output(out, text, tmp)
         if (s2 /= EXIT_OK) status = s2
@@ -608,5 +625,61 @@ contains
         end do
         status = close_output('', text, tmp)
     end function run_split
+
+    ! ------------------------------------------------------------------
+    !> em703 check: a program of seed 004's block format, as text or as an
+    !> ISO tape image (every row with an even number of holes; blank rows
+    !> skipped, track 8 dropped), checked block by block (em703_iso).
+    integer function run_check(path) result(status)
+        character(len=*), intent(in) :: path
+        character(len=:), allocatable :: bytes, prog, tmp, lines
+        type(text_t) :: msgs, text
+        integer :: i, c, n, nerr, nprog, nblocks, s2, k, j
+        logical :: tape
+        call read_tape(path, bytes, status)
+        if (status /= EXIT_OK) return
+        tape = .false.
+        do i = 1, len(bytes)
+            c = iachar(bytes(i:i))
+            if (c == 0 .or. c > 127) tape = .true.
+        end do
+        if (tape) then
+            allocate(character(len=len(bytes)) :: prog)
+            n = 0
+            do i = 1, len(bytes)
+                c = iachar(bytes(i:i))
+                if (mod(popcnt(c), 2) == 1) then
+                    call say(path // ': row ' // str(i) // ': parity error (odd number of ' // &
+                             'holes): not an ISO tape, or a misread row')
+                    status = EXIT_INPUT
+                    return
+                end if
+                if (c == 0) cycle
+                n = n + 1
+                prog(n:n) = achar(iand(c, 127))
+            end do
+            prog = prog(1:n)
+        else
+            prog = bytes
+        end if
+        call iso_check(prog, msgs, nerr, nprog, nblocks)
+        if (nerr > 0) then
+            lines = msgs%value()
+            k = 1
+            do while (k <= len(lines))
+                j = index(lines(k:), achar(10))
+                if (j == 0) j = len(lines) - k + 2
+                call say(path // ': ' // lines(k:k + j - 2))
+                k = k + j
+            end do
+            status = EXIT_INPUT
+            return
+        end if
+        s2 = open_output('', text, tmp)
+        call text%add(path // ': ' // str(nprog) // trim(merge(' program, ', ' programs,', &
+            nprog == 1)) // ' ' // str(nblocks) // trim(merge(' block, ', ' blocks,', nblocks == 1)) // &
+            ' no tape error')
+        status = close_output('', text, tmp)
+    end function run_check
 
 end module em703_commands
