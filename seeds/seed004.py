@@ -56,7 +56,7 @@ DOCUMENT_TABLE: tuple[tuple[int, int], ...] = (
     (9813, 8765), (9813, 8764), (9814, 8765), (9813, 8765), (9813, 8764),
     (9813, 8765), (9813, 8765), (9814, 8765), (9813, 8764), (9813, 8765))
 
-METHODS: tuple[str, ...] = ("binary", "decimal", "integrator")
+METHODS: tuple[str, ...] = ("binary", "decimal", "integrator", "master")
 
 
 # ---------------------------------------------------------------------------
@@ -335,7 +335,7 @@ def integrator_pulses(value: int, volume: int) -> list[int]:
 
 
 def _axis_pulses(method: str, value: int, size: int) -> list[int]:
-    if method == "binary":
+    if method in ("binary", "master"):
         return binary_pulses(value, size)
     if method == "decimal":
         return decimal_pulses(value, size)
@@ -348,7 +348,7 @@ def counter_size(method: str, frames: Sequence[tuple[int, int]]) -> int:
     """The smallest counter (bits, decades, or volume for the integrator)
     that holds every frame of ``frames``."""
     big = max([max(abs(a), abs(b)) for a, b in frames] + [1])
-    if method == "binary":
+    if method in ("binary", "master"):
         return big.bit_length()
     if method == "decimal":
         return len(str(big))
@@ -356,28 +356,54 @@ def counter_size(method: str, frames: Sequence[tuple[int, int]]) -> int:
 
 
 def interpolate(dx: int, dy: int, method: str = "binary", size: int | None = None,
-                max_pulses: int | None = None) -> Interpolation:
+                max_pulses: int | None = None, lag: int = 0) -> Interpolation:
     """Simulate the move (dx, dy) pulse by pulse.
 
-    ``size``: counter bits (binary), decades (decimal) or volume
+    ``size``: counter bits (binary, master), decades (decimal) or volume
     (integrator); default the smallest that holds the frames.
     ``max_pulses``: split the move first (:func:`split_move`) and
     interpolate frame after frame, as the document advises for long moves.
+    ``lag``: the X drive (heavy, inertial: the document's long-travel axis
+    of a large milling machine) carries out each of its pulses ``lag``
+    generator periods late.  With independent axes (binary, decimal,
+    integrator) X simply falls behind; with ``master`` (the document's
+    "интерполятор с задающей координатой") X is the master: each pulse the
+    multiplier gives X closes the valve between the generator and the
+    multiplier ("запрет"), and the master's position sensor opens it again
+    once X has moved ("разрешение"), so Y waits for X.  The positions are
+    recorded once a generator period.
     """
     if (dx, dy) == (0, 0):
         raise ValueError("a move of (0, 0) has nothing to interpolate")
+    if lag < 0:
+        raise ValueError(f"the lag is a number of generator periods, not {lag}")
     frames = split_move(dx, dy, max_pulses) if max_pulses else [(dx, dy)]
     if size is None:
         size = counter_size(method, frames)
-    volume = {"binary": 1 << size, "decimal": 10 ** size}.get(method, size)
+    volume = {"binary": 1 << size, "master": 1 << size, "decimal": 10 ** size}.get(method, size)
     xs, ys = [0], [0]
+    pending: list[int] = []             # X pulses on their way (independent axes)
     for fx, fy in frames:
         px = _axis_pulses(method, abs(fx), size)
         py = _axis_pulses(method, abs(fy), size)
         sx, sy = _sign(fx), _sign(fy)
         for a, b in zip(px, py):
-            xs.append(xs[-1] + sx * a)
+            if method == "master":
+                ys.append(ys[-1] + sy * b)
+                xs.append(xs[-1] + (sx * a if lag == 0 else 0))
+                if a and lag:
+                    # the valve is shut until the master's sensor reports the move
+                    for t in range(lag):
+                        xs.append(xs[-1] + (sx if t == lag - 1 else 0))
+                        ys.append(ys[-1])
+                continue
+            pending.append(sx * a)
+            moved = pending.pop(0) if len(pending) > lag else 0
+            xs.append(xs[-1] + moved)
             ys.append(ys[-1] + sy * b)
+    while pending:                       # the X drive catches up
+        xs.append(xs[-1] + pending.pop(0))
+        ys.append(ys[-1])
     if (xs[-1], ys[-1]) != (dx, dy):
         raise AssertionError(f"interpolator ended at {(xs[-1], ys[-1])}, not {(dx, dy)}")
     dev = tuple(line_distance(x, y, dx, dy) for x, y in zip(xs, ys))
@@ -403,8 +429,9 @@ def summary(run: Interpolation) -> str:
     """A few lines describing a simulation (what ``python -m seeds dda``
     prints)."""
     i = run.worst
-    unit = {"binary": "bits", "decimal": "decades", "integrator": "volume"}[run.method]
-    size = {"binary": run.volume.bit_length() - 1,
+    unit = {"binary": "bits", "master": "bits", "decimal": "decades",
+            "integrator": "volume"}[run.method]
+    size = {"binary": run.volume.bit_length() - 1, "master": run.volume.bit_length() - 1,
             "decimal": len(str(run.volume)) - 1}.get(run.method, run.volume)
     lines = [f"move DX {run.dx} DY {run.dy} pulses, {run.method} interpolator, "
              f"{unit} {size}, {run.volume} input pulses per frame, "
@@ -553,7 +580,7 @@ def add_split(sub: argparse._SubParsersAction) -> None:
 
 def _run_dda(args: argparse.Namespace) -> int:
     try:
-        run = interpolate(args.dx, args.dy, args.method, args.size, args.max)
+        run = interpolate(args.dx, args.dy, args.method, args.size, args.max, args.lag)
     except ValueError as exc:
         print(f"dda: {exc}", file=sys.stderr)
         return 2
@@ -579,12 +606,16 @@ def add_dda(sub: argparse._SubParsersAction) -> None:
     p.add_argument("dy", type=int, metavar="DY")
     p.add_argument("--method", choices=METHODS, default="binary",
                    help="binary pulse multiplier (default), decimal (5121) pulse "
-                        "multiplier, or integrator (DDA)")
+                        "multiplier, integrator (DDA), or master (a binary multiplier "
+                        "slaved to the X axis's position sensor)")
     p.add_argument("--size", type=int, default=None, metavar="S",
                    help="counter bits (binary), decades (decimal) or volume "
                         "(integrator); default the smallest that holds the move")
     p.add_argument("--max", type=int, default=None, metavar="N",
                    help="split the move into frames of at most N pulses first "
                         "(as 'split --max N') and interpolate frame by frame")
+    p.add_argument("--lag", type=int, default=0, metavar="L",
+                   help="the X drive moves L generator periods after its pulse (an "
+                        "inertial axis); with --method master Y waits for it")
     p.add_argument("--plot", metavar="FILE.svg", help="write an SVG picture")
     p.set_defaults(func=_run_dda)

@@ -225,3 +225,32 @@ def test_equal_split_exists_exactly_when_some_split_does() -> None:
                 except ValueError:
                     found = False
                 assert found == exists(u, v, n), (u, v, n)
+
+
+# ---------------------------------------------------------------------------
+# The interpolator with a master coordinate.
+# ---------------------------------------------------------------------------
+def test_master_interpolator_on_the_documents_frame() -> None:
+    """The document's first frame, 9813, 8765 pulses, 14 bits.  Without lag
+    the master interpolator is the binary multiplier pulse for pulse; with an
+    X drive L generator periods late, independent axes fall behind (4.437
+    pulses off the line at L = 8, 13.951 at L = 32) while the master's Y
+    waits for X and stays within 1.772 pulses whatever L."""
+    plain = s4.interpolate(9813, 8765, "binary")
+    assert s4.interpolate(9813, 8765, "master").xs == plain.xs
+    assert s4.interpolate(9813, 8765, "master").ys == plain.ys
+    for lag, independent in ((8, 4.437), (32, 13.951)):
+        assert s4.interpolate(9813, 8765, "binary", lag=lag).max_deviation == \
+            pytest.approx(independent, abs=1e-3)
+        run = s4.interpolate(9813, 8765, "master", lag=lag)
+        assert run.max_deviation == pytest.approx(1.772, abs=1e-3)
+        assert (run.xs[-1], run.ys[-1]) == (9813, 8765)
+        # one axis at a time, one pulse at a time: Y never moves with X
+        steps = {(b - a, d - c) for a, b, c, d in zip(run.xs, run.xs[1:], run.ys, run.ys[1:])}
+        assert steps <= {(0, 0), (1, 0), (0, 1)}
+
+
+def test_master_command(capsys) -> None:
+    assert main(["dda", "9813", "8765", "--method", "master", "--lag", "8"]) == 0
+    out = capsys.readouterr().out
+    assert "master interpolator, bits 14" in out and "+1.772 pulses" in out
