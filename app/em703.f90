@@ -5,7 +5,7 @@
 program em703
     use em703_cli, only: cli_t, parse_command_line
     use em703_commands, only: run_list, run_sim, run_svg, run_gcode, run_gerber, run_drill, &
-                              run_punch, run_view, run_split, run_html
+                              run_punch, run_view, run_split, run_html, run_check
     implicit none
 
     type(cli_t) :: c
@@ -32,7 +32,9 @@ program em703
     case ('html')
         status = run_html(c%file, c%out)
     case ('split')
-        status = run_split(c%move(1), c%move(2), c%max_pulses)
+        status = run_split(c%move(1), c%move(2), c%max_pulses, c%equal)
+    case ('check')
+        status = run_check(c%file)
     case default
         status = 2          ! parse_command_line accepts no other subcommand
     end select

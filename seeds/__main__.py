@@ -11,7 +11,7 @@ import argparse
 import sys
 from collections.abc import Callable, Sequence
 
-from . import gerber, seed001, seed002, seed003, seed004, tapereport
+from . import gerber, seed001, seed002, seed003, seed004, tapereport, ural1
 
 #: name -> function adding the subcommand's parser, in the documents' order.
 SUBCOMMANDS: dict[str, Callable[[argparse._SubParsersAction], None]] = {
@@ -22,6 +22,7 @@ SUBCOMMANDS: dict[str, Callable[[argparse._SubParsersAction], None]] = {
     "profile": seed002.add_profile,
     "equidistant": seed002.add_equidistant,
     "punch5121": seed002.add_punch5121,
+    "ural1": ural1.add_ural1,
     "cnclink": seed003.add_cnclink,
     "split": seed004.add_split,
     "dda": seed004.add_dda,

@@ -336,7 +336,8 @@ def digit_of(value: int) -> int:
 @dataclass(frozen=True)
 class Frame5121:
     """One frame of the LKP-01F tape: increments in pulses, the speed code
-    (one digit) and the auxiliary commands (three bits each for X and Y)."""
+    (one digit) and the auxiliary commands (three bits each for X and Y, two
+    for Z: rows 12-14 are built "in the same way" as X's rows 2-5)."""
 
     dx: int
     dy: int
@@ -344,12 +345,16 @@ class Frame5121:
     speed: int = 0
     aux_x: int = 0
     aux_y: int = 0
+    aux_z: int = 0
 
 
 #: Rows of one frame: X 4 digits, Y 4, Z 3, speed 1, then 3 blank rows.
 ROWS_PER_FRAME = 15
 LEADER_ROWS = 20
 _MARK = 16            # track 5
+#: The even frames' shift: two more blank rows before every even frame
+#: (our reading of "сдвиг четных кадров на две единицы"; docs/SEED002-URAL1.md).
+EVEN_SHIFT_ROWS = 2
 
 
 def _number_rows(value: int, digits: int, aux: int) -> list[int]:
@@ -372,19 +377,25 @@ def _number_rows(value: int, digits: int, aux: int) -> list[int]:
 
 def frame_rows_5121(f: Frame5121) -> list[int]:
     """The 15 rows of one frame (see the module doc and docs/SEED002-URAL1.md)."""
-    if not 0 <= f.speed <= 9 or not 0 <= f.aux_x <= 7 or not 0 <= f.aux_y <= 7:
+    if (not 0 <= f.speed <= 9 or not 0 <= f.aux_x <= 7 or not 0 <= f.aux_y <= 7
+            or not 0 <= f.aux_z <= 3):
         raise ValueError(f"speed {f.speed} (0-9) or auxiliary command {f.aux_x}, "
-                         f"{f.aux_y} (0-7) out of range")
+                         f"{f.aux_y} (0-7), {f.aux_z} (0-3) out of range")
     rows = _number_rows(f.dx, 4, f.aux_x) + _number_rows(f.dy, 4, f.aux_y)
-    rows += _number_rows(f.dz, 3, 0)
+    rows += _number_rows(f.dz, 3, f.aux_z)
     rows.append(tetrad(f.speed) | _MARK)          # the frame's marker ("стоп")
     return rows + [0, 0, 0]
 
 
-def punch_5121(frames: Iterable[Frame5121], leader: int = LEADER_ROWS) -> bytes:
-    """A tape image (.ptp: one byte a row, tracks 1-5 in the low 5 bits)."""
+def punch_5121(frames: Iterable[Frame5121], leader: int = LEADER_ROWS,
+               even_shift: bool = False) -> bytes:
+    """A tape image (.ptp: one byte a row, tracks 1-5 in the low 5 bits);
+    with ``even_shift`` every even frame (2nd, 4th, ...) is moved two rows
+    along the tape (:data:`EVEN_SHIFT_ROWS` blank rows before it)."""
     rows = [0] * leader
-    for f in frames:
+    for n, f in enumerate(frames, 1):
+        if even_shift and n % 2 == 0:
+            rows += [0] * EVEN_SHIFT_ROWS
         rows += frame_rows_5121(f)
     rows += [0] * leader
     return bytes(rows)
@@ -402,9 +413,9 @@ def read_5121(data: bytes) -> list[Frame5121]:
     """Frames of a 5121 tape image; ValueError naming the row (1-based).
 
     Frames are read from the end: the last row with a hole is the marker of
-    the last frame, and each frame (12 rows and 3 blank ones) follows the
-    one before it without a gap; everything before the first is leader and
-    must be blank.  (Reading forward would not do: a frame may begin with
+    the last frame, and each frame (12 rows and 3 blank ones, or 5 before a
+    shifted even frame) follows the one before it; everything before the
+    first is leader and must be blank.  (Reading forward would not do: a frame may begin with
     blank rows, its leading zero digits.)"""
     rows = list(data)
     for i, r in enumerate(rows):
@@ -421,14 +432,19 @@ def read_5121(data: bytes) -> list[Frame5121]:
         try:
             dx, ax = _read_number(body[0:4])
             dy, ay = _read_number(body[4:8])
-            dz, _ = _read_number(body[8:11])
+            dz, az = _read_number(body[8:11])
             speed = digit_of(body[11])
         except ValueError as exc:
             raise ValueError(f"frame at row {start + 1}: {exc}") from None
-        frames.append(Frame5121(dx, dy, dz, speed, ax, ay))
-        prev = start - 4
-        if prev >= 0 and rows[prev] & _MARK and not any(rows[start - 3:start]):
-            end = prev
+        frames.append(Frame5121(dx, dy, dz, speed, ax, ay, az))
+        for gap in (3, 3 + EVEN_SHIFT_ROWS):     # plain, or before a shifted even frame
+            prev = start - gap - 1
+            if prev >= 0 and rows[prev] & _MARK and not any(rows[start - gap:start]):
+                end = prev
+                break
+        else:
+            prev = -1
+        if prev >= 0:
             continue
         stray = [i for i in range(start) if rows[i]]
         if stray:
@@ -636,7 +652,7 @@ def add_equidistant(sub: argparse._SubParsersAction) -> None:
 
 
 def _read_frames_text(text: str) -> list[Frame5121]:
-    """'DX DY [DZ [SPEED [AUX_X [AUX_Y]]]]' per line (pulses)."""
+    """'DX DY [DZ [SPEED [AUX_X [AUX_Y [AUX_Z]]]]]' per line (pulses)."""
     frames = []
     for no, line in enumerate(text.splitlines(), 1):
         line = line.split("#", 1)[0].strip()
@@ -646,8 +662,8 @@ def _read_frames_text(text: str) -> list[Frame5121]:
             vals = [int(v) for v in line.split()]
         except ValueError:
             raise ValueError(f"line {no}: not whole numbers: {line!r}") from None
-        if not 2 <= len(vals) <= 6:
-            raise ValueError(f"line {no}: expected DX DY [DZ [SPEED [AUX_X [AUX_Y]]]]")
+        if not 2 <= len(vals) <= 7:
+            raise ValueError(f"line {no}: expected DX DY [DZ [SPEED [AUX_X [AUX_Y [AUX_Z]]]]]")
         try:
             frame = Frame5121(*vals)
             frame_rows_5121(frame)
@@ -662,10 +678,11 @@ def _run_punch5121(args: argparse.Namespace) -> int:
         if args.decode:
             data = open(args.input, "rb").read()
             for f in read_5121(data):
-                sys.stdout.write(f"{f.dx} {f.dy} {f.dz} {f.speed} {f.aux_x} {f.aux_y}\n")
+                sys.stdout.write(f"{f.dx} {f.dy} {f.dz} {f.speed} {f.aux_x} {f.aux_y} "
+                                 f"{f.aux_z}\n")
             return 0
         text = sys.stdin.read() if args.input == "-" else open(args.input, encoding="ascii").read()
-        data = punch_5121(_read_frames_text(text))
+        data = punch_5121(_read_frames_text(text), even_shift=args.even_shift)
         if not args.output:
             print("punch5121: -o TAPE.ptp is required to punch", file=sys.stderr)
             return 2
@@ -682,11 +699,14 @@ def _run_punch5121(args: argparse.Namespace) -> int:
 def add_punch5121(sub: argparse._SubParsersAction) -> None:
     p = sub.add_parser(
         "punch5121", help="punch frames in the 5121 code of the LKP-01F (seed 002)",
-        description="Punch frames 'DX DY [DZ [SPEED [AUX_X [AUX_Y]]]]' (pulses; DX, DY "
+        description="Punch frames 'DX DY [DZ [SPEED [AUX_X [AUX_Y [AUX_Z]]]]]' (pulses; DX, DY "
                     "at most 4 digits, DZ 3, SPEED one) as a 5-track tape image in the "
                     "5121 code of the Ural-1 paper's Table 6, or --decode one.  The "
                     "output of 'split --max 9999' is valid input.")
     p.add_argument("input", metavar="FRAMES", help="frame text ('-' = stdin), or a .ptp with --decode")
     p.add_argument("-o", "--output", metavar="TAPE.ptp")
     p.add_argument("--decode", action="store_true", help="print the frames of a tape image")
+    p.add_argument("--even-shift", action="store_true",
+                   help="move every even frame two rows along the tape (the reader "
+                        "takes either layout)")
     p.set_defaults(func=_run_punch5121)

@@ -41,7 +41,7 @@ from __future__ import annotations
 import argparse
 import math
 import sys
-from collections.abc import Sequence
+from collections.abc import Iterator, Sequence
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -56,7 +56,7 @@ DOCUMENT_TABLE: tuple[tuple[int, int], ...] = (
     (9813, 8765), (9813, 8764), (9814, 8765), (9813, 8765), (9813, 8764),
     (9813, 8765), (9813, 8765), (9814, 8765), (9813, 8764), (9813, 8765))
 
-METHODS: tuple[str, ...] = ("binary", "decimal", "integrator")
+METHODS: tuple[str, ...] = ("binary", "decimal", "integrator", "master")
 
 
 # ---------------------------------------------------------------------------
@@ -104,6 +104,119 @@ def line_distance(x: float, y: float, dx: int, dy: int) -> float:
     """Signed distance (pulses, + = left) of (x, y) from the line through the
     origin and (dx, dy)."""
     return (dx * y - dy * x) / math.hypot(dx, dy)
+
+
+# ---------------------------------------------------------------------------
+# Equal frames by continued fractions.
+# ---------------------------------------------------------------------------
+def semiconvergents(num: int, den: int) -> Iterator[tuple[int, int]]:
+    """The convergents and semiconvergents p/q of num/den (0 <= num <= den,
+    den > 0), q never decreasing: 0/1, then (p_{k-2} + t p_{k-1}) /
+    (q_{k-2} + t q_{k-1}) for t = 1 .. a_k of each partial quotient a_k
+    (t = a_k is the convergent).  The candidates for the best rational
+    approximation with a bounded denominator (the document's "аппарат
+    цепных дробей")."""
+    yield 0, 1
+    p0, q0, p1, q1 = 1, 0, 0, 1          # convergents k-2 and k-1
+    a, b = den, num                      # num/den = [0; a1, a2, ...]
+    while b:
+        quot = a // b
+        for t in range(1, quot + 1):
+            yield p0 + t * p1, q0 + t * q1
+        p0, q0, p1, q1 = p1, q1, p0 + quot * p1, q0 + quot * q1
+        a, b = b, a - quot * b
+
+
+@dataclass(frozen=True)
+class EqualSplit:
+    """A move split into ``count`` equal frames ``frame`` and, unless it is
+    (0, 0), one ``last`` frame that takes up the error; ``deviation``: the
+    largest distance (pulses) of a division point from the line."""
+
+    dx: int
+    dy: int
+    frame: tuple[int, int]
+    count: int
+    last: tuple[int, int]
+    deviation: float
+
+    @property
+    def frames(self) -> list[tuple[int, int]]:
+        out = [self.frame] * self.count
+        return out + ([self.last] if self.last != (0, 0) else [])
+
+
+def split_equal(dx: int, dy: int, max_pulses: int = DOCUMENT_MAX) -> EqualSplit:
+    """Split a straight move into equal frames, all but the last, which
+    takes up the error (seed 004: the tangent of the move approximated by
+    continued fractions).
+
+    Along the longer axis u and the shorter v: the frame's tangent is a
+    convergent or semiconvergent p/q of v/u with q <= max_pulses, the frame
+    (m q, m p) with the largest m that lets the last frame fit (both of its
+    components between 0 and max_pulses, same direction as the move); of all
+    candidates the one whose division points stray least from the line
+    (exactly: k m |q v - p u| / L for k equal frames, the last division point
+    being the farthest), then the fewest frames, then the smallest q.  Sums
+    are exact by construction.  ValueError when no candidate fits: the last
+    frame cannot take up the error of so many equal ones (possible only when
+    the move is longer than max_pulses squared; for every move of up to 79
+    pulses and limits 1-7 a split exists exactly when a search of all equal
+    frames finds one)."""
+    if max_pulses < 1:
+        raise ValueError(f"the frame limit must be at least 1 pulse, not {max_pulses}")
+    u, v = abs(dx), abs(dy)
+    swap = v > u
+    if swap:
+        u, v = v, u
+    if u == 0:
+        return EqualSplit(dx, dy, (0, 0), 0, (0, 0), 0.0)
+    best: tuple | None = None
+    for p, q in semiconvergents(v, u):
+        if q > max_pulses:
+            break
+        # the total multiplier c = k m: both remainders u - c q, v - c p in 0..max
+        clo = max(1, -(-(u - max_pulses) // q))
+        chi = u // q
+        if p:
+            clo, chi = max(clo, -(-(v - max_pulses) // p)), min(chi, v // p)
+        elif v > max_pulses:
+            continue
+        if clo > chi:
+            continue
+        for m in range(max_pulses // q, 0, -1):
+            k = chi // m
+            if k * m < clo:
+                continue
+            ru, rv = u - k * m * q, v - k * m * p
+            err = k * m * abs(q * v - p * u)
+            key = (err, k + (1 if (ru, rv) != (0, 0) else 0), q)
+            if best is None or key < best[0]:
+                best = (key, (m * q, m * p), k, (ru, rv), err)
+            break
+    if best is None:
+        raise ValueError(f"no equal frames of at most {max_pulses} pulses fit the move "
+                         f"({dx}, {dy})")
+    _, (a, b), k, (ru, rv), err = best
+    dev = err / math.hypot(u, v)
+
+    def orient(x: int, y: int) -> tuple[int, int]:
+        if swap:
+            x, y = y, x
+        return (x if dx >= 0 else -x, y if dy >= 0 else -y)
+
+    return EqualSplit(dx, dy, orient(a, b), k, orient(ru, rv), dev)
+
+
+def split_deviation(dx: int, dy: int, frames: Sequence[tuple[int, int]]) -> float:
+    """The largest distance (pulses) of a division point of the frames from
+    the line of the move."""
+    x = y = 0
+    worst = 0.0
+    for fx, fy in frames:
+        x, y = x + fx, y + fy
+        worst = max(worst, abs(line_distance(x, y, dx, dy)))
+    return worst
 
 
 # ---------------------------------------------------------------------------
@@ -222,7 +335,7 @@ def integrator_pulses(value: int, volume: int) -> list[int]:
 
 
 def _axis_pulses(method: str, value: int, size: int) -> list[int]:
-    if method == "binary":
+    if method in ("binary", "master"):
         return binary_pulses(value, size)
     if method == "decimal":
         return decimal_pulses(value, size)
@@ -235,7 +348,7 @@ def counter_size(method: str, frames: Sequence[tuple[int, int]]) -> int:
     """The smallest counter (bits, decades, or volume for the integrator)
     that holds every frame of ``frames``."""
     big = max([max(abs(a), abs(b)) for a, b in frames] + [1])
-    if method == "binary":
+    if method in ("binary", "master"):
         return big.bit_length()
     if method == "decimal":
         return len(str(big))
@@ -243,28 +356,54 @@ def counter_size(method: str, frames: Sequence[tuple[int, int]]) -> int:
 
 
 def interpolate(dx: int, dy: int, method: str = "binary", size: int | None = None,
-                max_pulses: int | None = None) -> Interpolation:
+                max_pulses: int | None = None, lag: int = 0) -> Interpolation:
     """Simulate the move (dx, dy) pulse by pulse.
 
-    ``size``: counter bits (binary), decades (decimal) or volume
+    ``size``: counter bits (binary, master), decades (decimal) or volume
     (integrator); default the smallest that holds the frames.
     ``max_pulses``: split the move first (:func:`split_move`) and
     interpolate frame after frame, as the document advises for long moves.
+    ``lag``: the X drive (heavy, inertial: the document's long-travel axis
+    of a large milling machine) carries out each of its pulses ``lag``
+    generator periods late.  With independent axes (binary, decimal,
+    integrator) X simply falls behind; with ``master`` (the document's
+    "интерполятор с задающей координатой") X is the master: each pulse the
+    multiplier gives X closes the valve between the generator and the
+    multiplier ("запрет"), and the master's position sensor opens it again
+    once X has moved ("разрешение"), so Y waits for X.  The positions are
+    recorded once a generator period.
     """
     if (dx, dy) == (0, 0):
         raise ValueError("a move of (0, 0) has nothing to interpolate")
+    if lag < 0:
+        raise ValueError(f"the lag is a number of generator periods, not {lag}")
     frames = split_move(dx, dy, max_pulses) if max_pulses else [(dx, dy)]
     if size is None:
         size = counter_size(method, frames)
-    volume = {"binary": 1 << size, "decimal": 10 ** size}.get(method, size)
+    volume = {"binary": 1 << size, "master": 1 << size, "decimal": 10 ** size}.get(method, size)
     xs, ys = [0], [0]
+    pending: list[int] = []             # X pulses on their way (independent axes)
     for fx, fy in frames:
         px = _axis_pulses(method, abs(fx), size)
         py = _axis_pulses(method, abs(fy), size)
         sx, sy = _sign(fx), _sign(fy)
         for a, b in zip(px, py):
-            xs.append(xs[-1] + sx * a)
+            if method == "master":
+                ys.append(ys[-1] + sy * b)
+                xs.append(xs[-1] + (sx * a if lag == 0 else 0))
+                if a and lag:
+                    # the valve is shut until the master's sensor reports the move
+                    for t in range(lag):
+                        xs.append(xs[-1] + (sx if t == lag - 1 else 0))
+                        ys.append(ys[-1])
+                continue
+            pending.append(sx * a)
+            moved = pending.pop(0) if len(pending) > lag else 0
+            xs.append(xs[-1] + moved)
             ys.append(ys[-1] + sy * b)
+    while pending:                       # the X drive catches up
+        xs.append(xs[-1] + pending.pop(0))
+        ys.append(ys[-1])
     if (xs[-1], ys[-1]) != (dx, dy):
         raise AssertionError(f"interpolator ended at {(xs[-1], ys[-1])}, not {(dx, dy)}")
     dev = tuple(line_distance(x, y, dx, dy) for x, y in zip(xs, ys))
@@ -290,8 +429,9 @@ def summary(run: Interpolation) -> str:
     """A few lines describing a simulation (what ``python -m seeds dda``
     prints)."""
     i = run.worst
-    unit = {"binary": "bits", "decimal": "decades", "integrator": "volume"}[run.method]
-    size = {"binary": run.volume.bit_length() - 1,
+    unit = {"binary": "bits", "master": "bits", "decimal": "decades",
+            "integrator": "volume"}[run.method]
+    size = {"binary": run.volume.bit_length() - 1, "master": run.volume.bit_length() - 1,
             "decimal": len(str(run.volume)) - 1}.get(run.method, run.volume)
     lines = [f"move DX {run.dx} DY {run.dy} pulses, {run.method} interpolator, "
              f"{unit} {size}, {run.volume} input pulses per frame, "
@@ -391,13 +531,30 @@ def svg_plot(run: Interpolation, width: int = 720) -> str:
 # ---------------------------------------------------------------------------
 # Command line: python -m seeds split / dda.
 # ---------------------------------------------------------------------------
+def equal_summary(run: EqualSplit) -> str:
+    """The comment line that ``split --equal`` prints after the frames."""
+    n = len(run.frames)
+    head = (f"# {n} frame{'s' if n != 1 else ''}: {run.count} of {run.frame[0]} {run.frame[1]}"
+            if run.count else "# no frame")
+    if run.last != (0, 0):
+        head += f", the last {run.last[0]} {run.last[1]}"
+    return head + (f"; largest distance of a division point from the line "
+                   f"{run.deviation:.6f} pulses\n")
+
+
 def _run_split(args: argparse.Namespace) -> int:
     try:
-        frames = split_move(args.dx, args.dy, args.max)
+        if args.equal:
+            run = split_equal(args.dx, args.dy, args.max)
+            frames = run.frames
+        else:
+            frames = split_move(args.dx, args.dy, args.max)
     except ValueError as exc:
         print(f"split: {exc}", file=sys.stderr)
-        return 2
+        return 2 if args.max < 1 else 1
     sys.stdout.write("".join(f"{a} {b}\n" for a, b in frames))
+    if args.equal:
+        sys.stdout.write(equal_summary(run))
     return 0
 
 
@@ -412,6 +569,10 @@ def add_split(sub: argparse._SubParsersAction) -> None:
                     "The document's example: --max 9999 98132 87647.")
     p.add_argument("--max", type=int, default=DOCUMENT_MAX, metavar="N",
                    help=f"most pulses per axis in one frame (default {DOCUMENT_MAX})")
+    p.add_argument("--equal", action="store_true",
+                   help="equal frames but the last, which takes up the error (continued "
+                        "fractions); a last '#' line gives the largest distance of a "
+                        "division point from the line")
     p.add_argument("dx", type=int, metavar="DX")
     p.add_argument("dy", type=int, metavar="DY")
     p.set_defaults(func=_run_split)
@@ -419,7 +580,7 @@ def add_split(sub: argparse._SubParsersAction) -> None:
 
 def _run_dda(args: argparse.Namespace) -> int:
     try:
-        run = interpolate(args.dx, args.dy, args.method, args.size, args.max)
+        run = interpolate(args.dx, args.dy, args.method, args.size, args.max, args.lag)
     except ValueError as exc:
         print(f"dda: {exc}", file=sys.stderr)
         return 2
@@ -445,12 +606,16 @@ def add_dda(sub: argparse._SubParsersAction) -> None:
     p.add_argument("dy", type=int, metavar="DY")
     p.add_argument("--method", choices=METHODS, default="binary",
                    help="binary pulse multiplier (default), decimal (5121) pulse "
-                        "multiplier, or integrator (DDA)")
+                        "multiplier, integrator (DDA), or master (a binary multiplier "
+                        "slaved to the X axis's position sensor)")
     p.add_argument("--size", type=int, default=None, metavar="S",
                    help="counter bits (binary), decades (decimal) or volume "
                         "(integrator); default the smallest that holds the move")
     p.add_argument("--max", type=int, default=None, metavar="N",
                    help="split the move into frames of at most N pulses first "
                         "(as 'split --max N') and interpolate frame by frame")
+    p.add_argument("--lag", type=int, default=0, metavar="L",
+                   help="the X drive moves L generator periods after its pulse (an "
+                        "inertial axis); with --method master Y waits for it")
     p.add_argument("--plot", metavar="FILE.svg", help="write an SVG picture")
     p.set_defaults(func=_run_dda)

@@ -21,7 +21,8 @@ program test_em703_tools
     use em703_view, only: view_tape, guess_code
     use em703_jobsheet, only: job_t, read_job, parse_scale, machine_scale
     use base_io, only: write_text
-    use em703_split, only: split_move
+    use em703_split, only: split_move, split_equal
+    use em703_iso, only: iso_program, iso_check, geometric_code, signed_digits, g_group, m_group
     use base_sha256, only: sha256_hex
     use base_files, only: write_whole, same_file
     implicit none
@@ -45,6 +46,8 @@ program test_em703_tools
     call test_view()
     call test_jobsheet()
     call test_split_seed004()
+    call test_split_equal_seed004()
+    call test_iso_block_format()
     call test_text_helpers()
     call test_sha256()
     call test_whole_files()
@@ -714,6 +717,66 @@ contains
         call check(sum(dxs) == -7 .and. sum(dys) == 3 .and. all(abs(dxs) <= 2), &
                    'split: a negative move sums back and keeps the limit')
     end subroutine test_split_seed004
+
+    !> Seed 004's equal frames by continued fractions: 98132, 87647 pulses as
+    !> 11 frames of 8779, 7841 (7841/8779, a convergent of 87647/98132) and
+    !> the last 1563, 1396; the sums exact, every frame within the limit.
+    subroutine test_split_equal_seed004()
+        integer(int64) :: fx, fy, n, lx, ly
+        real(real64) :: dev
+        logical :: ok
+        call split_equal(98132_int64, 87647_int64, 9999_int64, fx, fy, n, lx, ly, dev, ok)
+        call check(ok .and. fx == 8779 .and. fy == 7841 .and. n == 11 .and. lx == 1563 .and. &
+                   ly == 1396, 'split --equal: the document''s move')
+        call check(n * fx + lx == 98132 .and. n * fy + ly == 87647, 'split --equal: sums exact')
+        call check(abs(dev - 8.3603e-5_real64) < 1.0e-8_real64, 'split --equal: the deviation')
+        call split_equal(-7_int64, 3_int64, 2_int64, fx, fy, n, lx, ly, dev, ok)
+        call check(ok .and. fx == -2 .and. fy == 1 .and. n == 3 .and. lx == -1 .and. ly == 0, &
+                   'split --equal: a negative move')
+        call split_equal(0_int64, 0_int64, 9999_int64, fx, fy, n, lx, ly, dev, ok)
+        call check(ok .and. n == 0 .and. lx == 0 .and. ly == 0, 'split --equal: no move, no frame')
+        call split_equal(600_int64, 400_int64, 9999_int64, fx, fy, n, lx, ly, dev, ok)
+        call check(ok .and. fx == 600 .and. fy == 400 .and. n == 1 .and. dev == 0, &
+                   'split --equal: a move that fits is one frame')
+    end subroutine test_split_equal_seed004
+
+    !> Seed 004's block format: the geometric codes (5500 mm/min is F76, 1500
+    !> F65, 1.12**99 the document's 75000), the signed six digits, the G
+    !> groups of its example block G02 G17 G45 G61 G83 (one of each), a
+    !> program of the report's Example 3 arc, and the check's tape errors.
+    subroutine test_iso_block_format()
+        type(frame_t) :: f(2)
+        type(run_t) :: run(1)
+        type(error_t), allocatable :: err
+        type(text_t) :: g, msgs
+        character(len=:), allocatable :: s
+        integer :: nerr, nprog, nblocks
+        call check_int(geometric_code(5500.0_real64), 76, 'iso: F76 is 5500 mm/min')
+        call check_int(geometric_code(1500.0_real64), 65, 'iso: F65 is 1500 mm/min')
+        call check_int(geometric_code(75000.0_real64), 98, 'iso: 75000 is past F98 (99 is rapid)')
+        call check_str(signed_digits(2310_int64), '+023100', 'iso: 23.10 mm')
+        call check_str(signed_digits(-5_int64), '-000050', 'iso: -0.05 mm')
+        call check(g_group(2) == 1 .and. g_group(17) == 2 .and. g_group(45) == 3 .and. &
+                   g_group(61) == 4 .and. g_group(83) == 5, 'iso: G02 G17 G45 G61 G83, five groups')
+        call check(m_group(3) == m_group(5) .and. m_group(6) /= m_group(2) .and. m_group(7) == 0, &
+                   'iso: M groups')
+        f(1) = fr(0, 0, 0, 0, 0, 20)
+        f(2) = fr(2000, 0, -2000, -2000, 0, 13)
+        call simulate(f, run(1), err)
+        call iso_program(run, ['tape T'], 'test', 0.0_real64, g, err)
+        s = g%value()
+        call check(.not. allocated(err) .and. index(s, 'N002 G01 Z-001000 F76' // achar(10) // &
+            'N003 G02 X-020000 Y-020000 I-020000 J+000000 F65' // achar(10) // &
+            'N004 G00 Z+001000') > 0, 'iso: the arc of Example 3')
+        call iso_check(s, msgs, nerr, nprog, nblocks)
+        call check(nerr == 0 .and. nprog == 1 .and. nblocks == 5, 'iso: the program checks')
+        call iso_check('%' // achar(10) // 'N001 G01 G02 X+000100 Y+000000' // achar(10) // &
+                       'N002 M03 M04' // achar(10) // '%' // achar(10), msgs, nerr, nprog, nblocks)
+        s = msgs%value()
+        call check(nerr == 2 .and. index(s, 'block N001 (line 2): ошибка перфоленты') > 0 .and. &
+                   index(s, 'block N002 (line 3): ошибка перфоленты (tape error): M03 and M04') > 0, &
+                   'iso: two of one group is a tape error')
+    end subroutine test_iso_block_format
 
     !> SHA-256: the standard's test vectors, the padding's edge lengths, every
     !> byte value (the digits are those of sha256sum).

@@ -210,7 +210,14 @@ def test_arc_1_2_has_the_texts_radius_and_angles() -> None:
     assert arc.r == pytest.approx(18, abs=0.05)
     ang = [math.degrees(math.atan2(y - arc.cy, x - arc.cx)) for x, y in
            ((arc.x0, arc.y0), (arc.x1, arc.y1))]
-    assert ang[0] == pytest.approx(172.5, abs=1) and ang[1] == pytest.approx(127, abs=1)
+    # the fitted centre gives 172.27 and 127.83 degrees (the printed centre
+    # 172.01 and 127.57); the printed 172°30' lies beyond what the table's
+    # one decimal allows (point 1 and O2 each moved by 0.05 mm at most reach
+    # 172.36): the angles were read from the drawing (disagreement 15)
+    assert ang[0] == pytest.approx(172.265, abs=0.005) and ang[1] == pytest.approx(127.828, abs=0.005)
+    reach = max(math.degrees(math.atan2(61.5 + a - 59 - b, 7.5 + c - 25.3 - d))
+                for a in (-.05, .05) for b in (-.05, .05) for c in (-.05, .05) for d in (-.05, .05))
+    assert reach == pytest.approx(172.363, abs=0.001) and 172.5 - reach > 0.13
     o2 = s2.FLANGE_CENTRES[(1, 2)]
     assert abs(math.dist(o2, (14.3, 71.3)) - 18) > 1.4
 

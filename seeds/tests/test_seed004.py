@@ -160,3 +160,97 @@ def test_dda_command_and_plot(tmp_path: Path) -> None:
     assert s4.svg_plot(run) == text                               # deterministic
     assert main(["dda", "0", "0"]) == 2
     assert main(["dda", "99999", "1", "--method", "decimal", "--size", "4"]) == 2
+
+
+# ---------------------------------------------------------------------------
+# Equal frames by continued fractions.
+# ---------------------------------------------------------------------------
+def test_equal_split_of_the_documents_move() -> None:
+    """98132, 87647 at most 9999: 7841/8779 is a convergent of 87647/98132;
+    11 such frames and the last (1563, 1396), the division points within
+    0.0001 pulse of the line (the unequal table's are within 0.373)."""
+    run = s4.split_equal(98132, 87647, 9999)
+    assert run.frames == [(8779, 7841)] * 11 + [(1563, 1396)]
+    assert (8779, 7841) in [(q, p) for p, q in s4.semiconvergents(87647, 98132)]
+    assert run.deviation == pytest.approx(8.3603e-5, abs=1e-9)
+    assert s4.split_deviation(98132, 87647, run.frames) == pytest.approx(run.deviation)
+    assert s4.split_deviation(98132, 87647, s4.DOCUMENT_TABLE) == pytest.approx(0.37291, abs=1e-5)
+
+
+def test_semiconvergents_of_a_known_fraction() -> None:
+    """7/16 = [0; 2, 3, 2]: convergents 0/1, 1/2, 3/7, 7/16 and the
+    semiconvergents between them."""
+    got = list(s4.semiconvergents(7, 16))
+    assert got == [(0, 1), (1, 1), (1, 2), (1, 3), (2, 5), (3, 7), (4, 9), (7, 16)]
+
+
+@given(st.integers(-10**6, 10**6), st.integers(-10**6, 10**6), st.integers(1, 3000))
+@example(98132, 87647, 9999)
+@example(1, 98132, 9999)
+def test_equal_split_properties(dx: int, dy: int, nmax: int) -> None:
+    try:
+        run = s4.split_equal(dx, dy, nmax)
+    except ValueError:
+        # the last frame cannot take up the error of the equal ones: only
+        # for moves longer than the limit squared
+        assert max(abs(dx), abs(dy)) > nmax * nmax
+        return
+    frames = run.frames
+    assert sum(f[0] for f in frames) == dx and sum(f[1] for f in frames) == dy
+    assert all(abs(a) <= nmax and abs(b) <= nmax for a, b in frames)
+    assert all(f == frames[0] for f in frames[:run.count])
+    assert all(a * dx >= 0 and b * dy >= 0 for a, b in frames)          # never backwards
+    assert s4.split_deviation(dx, dy, frames) == pytest.approx(run.deviation, abs=1e-9)
+
+
+def test_equal_split_command(capsys) -> None:
+    assert main(["split", "--equal", "--max", "2", "7", "3"]) == 0
+    assert capsys.readouterr().out == (
+        "2 1\n2 1\n2 1\n1 0\n# 4 frames: 3 of 2 1, the last 1 0; largest distance of a "
+        "division point from the line 0.393919 pulses\n")
+
+
+def test_equal_split_exists_exactly_when_some_split_does() -> None:
+    """Every move of up to 40 pulses with limits 1-5: the convergents find
+    equal frames whenever a search of all (k, a, b) does."""
+    def exists(u: int, v: int, n: int) -> bool:
+        return any(0 <= u - k * a <= n and 0 <= v - k * b <= n
+                   for k in range(1, u + 2) for a in range(n + 1) for b in range(n + 1))
+    for n in range(1, 6):
+        for u in range(1, 41):
+            for v in range(u + 1):
+                try:
+                    s4.split_equal(u, v, n)
+                    found = True
+                except ValueError:
+                    found = False
+                assert found == exists(u, v, n), (u, v, n)
+
+
+# ---------------------------------------------------------------------------
+# The interpolator with a master coordinate.
+# ---------------------------------------------------------------------------
+def test_master_interpolator_on_the_documents_frame() -> None:
+    """The document's first frame, 9813, 8765 pulses, 14 bits.  Without lag
+    the master interpolator is the binary multiplier pulse for pulse; with an
+    X drive L generator periods late, independent axes fall behind (4.437
+    pulses off the line at L = 8, 13.951 at L = 32) while the master's Y
+    waits for X and stays within 1.772 pulses whatever L."""
+    plain = s4.interpolate(9813, 8765, "binary")
+    assert s4.interpolate(9813, 8765, "master").xs == plain.xs
+    assert s4.interpolate(9813, 8765, "master").ys == plain.ys
+    for lag, independent in ((8, 4.437), (32, 13.951)):
+        assert s4.interpolate(9813, 8765, "binary", lag=lag).max_deviation == \
+            pytest.approx(independent, abs=1e-3)
+        run = s4.interpolate(9813, 8765, "master", lag=lag)
+        assert run.max_deviation == pytest.approx(1.772, abs=1e-3)
+        assert (run.xs[-1], run.ys[-1]) == (9813, 8765)
+        # one axis at a time, one pulse at a time: Y never moves with X
+        steps = {(b - a, d - c) for a, b, c, d in zip(run.xs, run.xs[1:], run.ys, run.ys[1:])}
+        assert steps <= {(0, 0), (1, 0), (0, 1)}
+
+
+def test_master_command(capsys) -> None:
+    assert main(["dda", "9813", "8765", "--method", "master", "--lag", "8"]) == 0
+    out = capsys.readouterr().out
+    assert "master interpolator, bits 14" in out and "+1.772 pulses" in out

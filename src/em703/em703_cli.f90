@@ -25,7 +25,7 @@ module em703_cli
     !> What the command line asks for. Unused fields keep their defaults,
     !> which are the subcommands' defaults.
     type, public :: cli_t
-        character(len=:), allocatable :: command    !< list, sim, svg, gcode, gerber, drill, punch, view, split, html
+        character(len=:), allocatable :: command    !< list, sim, svg, gcode, gerber, drill, punch, view, split, html, check
         character(len=:), allocatable :: file       !< the one file argument
         character(len=:), allocatable :: out        !< -o FILE ('' = the default)
         !> --code: a tape code (list, sim: 8, K or auto; view: auto, em703, iso or
@@ -35,13 +35,14 @@ module em703_cli
         logical :: utf8 = .false.                   !< list --utf8
         logical :: bare = .false.                   !< list --bare
         logical :: use_z = .false.                  !< gcode --z
-        character(len=:), allocatable :: dialect    !< gcode --dialect linuxcnc|grbl
+        character(len=:), allocatable :: dialect    !< gcode --dialect linuxcnc|grbl|iso-1970s
         integer :: num = 1, den = 1                 !< sim --scale N:D
         integer(int64) :: start_x = 0, start_y = 0  !< sim --start, 0.01 mm
         integer(int64) :: tool = 50                 !< sim --tool, 0.01 mm
         real(real64) :: chord_tol = 0               !< gcode --chords, mm (0: arcs stay arcs)
         integer :: first = 1, last = huge(1)        !< view --rows FIRST:LAST
         integer(int64) :: max_pulses = 9999         !< split --max
+        logical :: equal = .false.                  !< split --equal
         integer(int64) :: move(2) = 0               !< split DX DY, pulses
     end type cli_t
 
@@ -50,9 +51,9 @@ module em703_cli
     integer(int64), parameter :: FIELD_UNITS = nint(FIELD_MM * 100, int64), MAX_TOOL = 2000
 
     !> The options of each subcommand, besides -h and --help.
-    character(len=*), parameter :: SUBCOMMANDS(10) = [character(len=6) :: &
-        'list', 'sim', 'svg', 'gcode', 'gerber', 'drill', 'punch', 'view', 'split', 'html']
-    character(len=*), parameter :: OPTIONS(10) = [character(len=40) :: &
+    character(len=*), parameter :: SUBCOMMANDS(11) = [character(len=6) :: &
+        'list', 'sim', 'svg', 'gcode', 'gerber', 'drill', 'punch', 'view', 'split', 'html', 'check']
+    character(len=*), parameter :: OPTIONS(11) = [character(len=40) :: &
         '--utf8 --bare --code', &
         '--scale --start --svg --tool --code', &
         '-o --output', &
@@ -61,8 +62,9 @@ module em703_cli
         '-o --output', &
         '-o --output --code', &
         '--code --rows', &
-        '--max', &
-        '-o --output']
+        '--max --equal', &
+        '-o --output', &
+        '']
 
 contains
 
@@ -115,6 +117,8 @@ contains
         select case (cli%command)
         case ('list', 'sim', 'view')
             call need_file(cli%command, cli%file, 'TAPE')
+        case ('check')
+            call need_file('check', cli%file, 'PROGRAM (a text or an ISO tape image)')
         case ('svg', 'gerber', 'drill', 'html')
             call need_file(cli%command, cli%file, 'JOB (a job sheet NAME.job)')
         case ('gcode')
@@ -153,13 +157,15 @@ contains
             cli%bare = .true.
         case ('--z')
             cli%use_z = .true.
+        case ('--equal')
+            cli%equal = .true.
         case ('--dialect')
             v = option_value(sub, i, nargs)
             select case (v)
-            case ('linuxcnc', 'grbl')
+            case ('linuxcnc', 'grbl', 'iso-1970s')
                 cli%dialect = v
             case default
-                call usage_error(sub, '--dialect takes linuxcnc or grbl, not "' // v // '"')
+                call usage_error(sub, '--dialect takes linuxcnc, grbl or iso-1970s, not "' // v // '"')
             end select
         case ('-o', '--output')
             cli%out = option_value(sub, i, nargs)
@@ -303,7 +309,7 @@ contains
         select case (sub)
         case ('split')
             call put([character(len=78) :: &
-            'usage: em703 split [--max N] DX DY', &
+            'usage: em703 split [--max N] [--equal] DX DY', &
             '', &
             'Prints, one "DX DY" pair a line, the frames of a straight move of DX, DY', &
             'pulses (0.01 mm) split into as few frames of at most N pulses per axis as', &
@@ -312,8 +318,12 @@ contains
             'the start). The document''s example: em703 split --max 9999 98132 87647.', &
             '', &
             '  --max N   the most pulses of one frame (default 9999)', &
+            '  --equal   every frame equal but the last, which takes up the error: the', &
+            '            frame''s tangent by continued fractions (seed 004); a last line', &
+            '            "# ..." gives the largest distance of a division point from', &
+            '            the line, in pulses', &
             '', &
-            'Exit status: 0 done, 2 usage error.'])
+            'Exit status: 0 done, 1 no equal frames fit, 2 usage error.'])
         case ('html')
             call put([character(len=78) :: &
             'usage: em703 html JOB [-o FILE]', &
@@ -330,6 +340,22 @@ contains
             '  -o FILE   write the page to FILE (default: standard output)', &
             '', &
             'Exit status: 0 done, 1 a bad job sheet or tape, 2 usage or I/O error.'])
+        case ('check')
+            call put([character(len=78) :: &
+            'usage: em703 check PROGRAM', &
+            '', &
+            'Reads a program of seed 004''s block format (em703 gcode --dialect', &
+            'iso-1970s), as text or punched on ISO tape (em703 punch --code iso), and', &
+            'checks every block as the document''s reader would: N and three digits,', &
+            'increasing; the words in the order N G X Y Z I J K F S T M; dimensions', &
+            'a sign and six digits, G M F S T two digits; M codes of the document''s', &
+            'table; and no two G or M codes of one group in a block ("ошибка', &
+            'перфоленты": G00-G09, G10-G39, G40-G59, G60-G79, G80-G99; M00/M02,', &
+            'M03-M05, M06, M38-M40). Prints "FILE: P programs, B blocks, no tape', &
+            'error", or a line "FILE: block Nnnn (line L): ..." for each fault.', &
+            '', &
+            'Exit status: 0 no fault, 1 faults (or a parity error on the tape), 2 usage', &
+            'or I/O error.'])
         case ('list')
             call put([character(len=78) :: &
             'usage: em703 list TAPE [--utf8] [--code 8|K|auto] [--bare]', &
@@ -381,8 +407,8 @@ contains
             'Exit status: 0 done, 1 a bad job sheet or tape, 2 usage or I/O error.'])
         case ('gcode')
             call put([character(len=78) :: &
-            'usage: em703 gcode TAPE|JOB [--dialect linuxcnc|grbl] [--chords TOL] [--z]', &
-            '                            [-o FILE]', &
+            'usage: em703 gcode TAPE|JOB [--dialect linuxcnc|grbl|iso-1970s] [--chords TOL]', &
+            '                            [--z] [-o FILE]', &
             '', &
             'Translates a tape (or the three tapes of a job sheet NAME.job, each after', &
             'a tool change T1..T3 M06) to an ISO 6983 program: %, N numbers, G21 G90,', &
@@ -391,7 +417,11 @@ contains
             '', &
             '  --dialect D   linuxcnc (default, as above) or grbl: what GRBL 1.1', &
             '                accepts (no %, M0 pauses instead of tool changes, F in', &
-            '                the first block, arc centres exact to GRBL''s check)', &
+            '                the first block, arc centres exact to GRBL''s check), or', &
+            '                iso-1970s: seed 004''s block format (N and three digits,', &
+            '                at most 999 blocks a program, G two digits, increments', &
+            '                X+023100 in 0.001 mm, F two-digit codes of 1.12**F mm/min,', &
+            '                T01 M06, the tool as Z moves; see em703 check)', &
             '  --chords TOL  arcs as chords for line-only machines, step angle', &
             '                2 arccos(1 - TOL/R), never more than TOL mm off the arc', &
             '  --z           tool down / up as Z moves (G01 Z0.000 / G00 Z1.000)', &
@@ -461,14 +491,16 @@ contains
             '  sim TAPE [--scale N:D] [--start X,Y] [--svg FILE]', &
             '                                       run it on the coordinatograph', &
             '  svg JOB [-o FILE]                    draw the tapes of a job sheet', &
-            '  gcode TAPE|JOB [--dialect linuxcnc|grbl] [--chords TOL] [--z] [-o FILE]', &
+            '  gcode TAPE|JOB [--dialect linuxcnc|grbl|iso-1970s] [--chords TOL] [--z]', &
+            '                 [-o FILE]', &
             '                                       ISO 6983 G-code', &
             '  gerber JOB [-o FILE]                 Gerber RS-274X', &
             '  drill JOB [-o FILE]                  Excellon: a hit per pad, tour order', &
             '  punch --code iso|eia [-o TAPE] FILE  punch text on ISO or EIA tape', &
             '  view TAPE                            a picture of a punched tape', &
             '  html JOB [-o FILE]                   the job on an animated machine', &
-            '  split [--max N] DX DY                a long move split into frames', &
+            '  split [--max N] [--equal] DX DY      a long move split into frames', &
+            '  check PROGRAM                        seed 004''s reader: tape errors', &
             '  --version                            the version', &
             '', &
             'Exit status: 0 done, 1 the input had errors, 2 usage or I/O error.'])

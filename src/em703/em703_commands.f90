@@ -19,12 +19,13 @@ module em703_commands
     use em703_drill, only: hole_t, find_holes, drill_program
     use em703_punch, only: punch_text
     use em703_view, only: view_tape, guess_code
-    use em703_split, only: frames_needed, split_frame
+    use em703_split, only: frames_needed, split_frame, split_equal
     use em703_html, only: html_job
+    use em703_iso, only: iso_program, iso_check
     implicit none
     private
     public :: run_list, run_sim, run_svg, run_gcode, run_gerber, run_drill, run_punch, run_view, &
-              run_split, run_html
+              run_split, run_html, run_check
 
     integer, parameter, public :: EXIT_OK = 0, EXIT_INPUT = 1, EXIT_USAGE = 2
 
@@ -402,6 +403,7 @@ contains
         integer(int64) :: tools(NLAYERS)
         type(text_t) :: text
         character(len=:), allocatable :: tmp
+        type(error_t), allocatable :: err
         integer :: s2
         logical :: complete
         if (ends_with(path, '.job')) then
@@ -412,8 +414,13 @@ contains
                 status = s2
                 return
             end if
-            call gcode_program(runs, labels, tools, 'EM-703 job ' // job%name // ', code ' // &
-                               job%code, chord_tol, use_z, text, dialect)
+            if (dialect == 'iso-1970s') then
+                call iso_program(runs, labels, 'EM-703 job ' // job%name // ', code ' // job%code, &
+                                 chord_tol, text, err)
+            else
+                call gcode_program(runs, labels, tools, 'EM-703 job ' // job%name // ', code ' // &
+                                   job%code, chord_tol, use_z, text, dialect)
+            end if
         else
             call load_run(path, 'auto', runs(1), status)
             if (status /= EXIT_OK) return
@@ -426,9 +433,19 @@ contains
                 status = s2
                 return
             end if
-            call gcode_program(runs(1:1), labels(1:1), tools(1:1), 'EM-703 tape, code ' // &
-                               runs(1)%code // ', ' // str(runs(1)%nframes) // ' frames', &
-                               chord_tol, use_z, text, dialect)
+            if (dialect == 'iso-1970s') then
+                call iso_program(runs(1:1), labels(1:1), 'EM-703 tape, code ' // runs(1)%code // &
+                                 ', ' // str(runs(1)%nframes) // ' frames', chord_tol, text, err)
+            else
+                call gcode_program(runs(1:1), labels(1:1), tools(1:1), 'EM-703 tape, code ' // &
+                                   runs(1)%code // ', ' // str(runs(1)%nframes) // ' frames', &
+                                   chord_tol, use_z, text, dialect)
+            end if
+        end if
+        if (allocated(err)) then
+            call say(error_text(err))
+            text%message = 'abandoned'
+            status = EXIT_INPUT
         end if
         s2 = close_output(out, text, tmp)
         if (s2 /= EXIT_OK) status = s2
@@ -595,12 +612,43 @@ contains
     !> em703 split: the frames of the straight move (dx, dy) pulses, at most
     !> max_pulses per axis each (em703_split), one "DX DY" pair a line, each
     !> written as it is found.
-    integer function run_split(dx, dy, max_pulses) result(status)
+    integer function run_split(dx, dy, max_pulses, equal) result(status)
         integer(int64), intent(in) :: dx, dy, max_pulses
-        integer(int64) :: k, n, fx, fy
+        logical, intent(in), optional :: equal
+        integer(int64) :: k, n, fx, fy, lx, ly
+        real(real64) :: dev
+        logical :: ok
         type(text_t) :: text
-        character(len=:), allocatable :: tmp
+        character(len=:), allocatable :: tmp, line
         integer :: s2
+        if (present(equal)) then
+            if (equal) then
+                call split_equal(dx, dy, max_pulses, fx, fy, n, lx, ly, dev, ok)
+                if (.not. ok) then
+                    call say('em703 split: no equal frames of at most ' // str(max_pulses) // &
+                             ' pulses fit the move (' // str(dx) // ', ' // str(dy) // ')')
+                    status = EXIT_INPUT
+                    return
+                end if
+                s2 = open_output('', text, tmp)
+                do k = 1, n
+                    call text%add(str(fx) // ' ' // str(fy))
+                end do
+                if (lx /= 0 .or. ly /= 0) call text%add(str(lx) // ' ' // str(ly))
+                k = n + merge(1, 0, lx /= 0 .or. ly /= 0)
+                if (n > 0) then
+                    line = '# ' // str(k) // trim(merge(' frame: ', ' frames:', k == 1)) // ' ' // &
+                           str(n) // ' of ' // str(fx) // ' ' // str(fy)
+                else
+                    line = '# no frame'
+                end if
+                if (lx /= 0 .or. ly /= 0) line = line // ', the last ' // str(lx) // ' ' // str(ly)
+                call text%add(line // '; largest distance of a division point from the line ' // &
+                              fixed(dev, 6) // ' pulses')
+                status = close_output('', text, tmp)
+                return
+            end if
+        end if
         s2 = open_output('', text, tmp)
         n = frames_needed(dx, dy, max_pulses)
         do k = 1, n
@@ -609,5 +657,61 @@ contains
         end do
         status = close_output('', text, tmp)
     end function run_split
+
+    ! ------------------------------------------------------------------
+    !> em703 check: a program of seed 004's block format, as text or as an
+    !> ISO tape image (every row with an even number of holes; blank rows
+    !> skipped, track 8 dropped), checked block by block (em703_iso).
+    integer function run_check(path) result(status)
+        character(len=*), intent(in) :: path
+        character(len=:), allocatable :: bytes, prog, tmp, lines
+        type(text_t) :: msgs, text
+        integer :: i, c, n, nerr, nprog, nblocks, s2, k, j
+        logical :: tape
+        call read_tape(path, bytes, status)
+        if (status /= EXIT_OK) return
+        tape = .false.
+        do i = 1, len(bytes)
+            c = iachar(bytes(i:i))
+            if (c == 0 .or. c > 127) tape = .true.
+        end do
+        if (tape) then
+            allocate(character(len=len(bytes)) :: prog)
+            n = 0
+            do i = 1, len(bytes)
+                c = iachar(bytes(i:i))
+                if (mod(popcnt(c), 2) == 1) then
+                    call say(path // ': row ' // str(i) // ': parity error (odd number of ' // &
+                             'holes): not an ISO tape, or a misread row')
+                    status = EXIT_INPUT
+                    return
+                end if
+                if (c == 0) cycle
+                n = n + 1
+                prog(n:n) = achar(iand(c, 127))
+            end do
+            prog = prog(1:n)
+        else
+            prog = bytes
+        end if
+        call iso_check(prog, msgs, nerr, nprog, nblocks)
+        if (nerr > 0) then
+            lines = msgs%value()
+            k = 1
+            do while (k <= len(lines))
+                j = index(lines(k:), achar(10))
+                if (j == 0) j = len(lines) - k + 2
+                call say(path // ': ' // lines(k:k + j - 2))
+                k = k + j
+            end do
+            status = EXIT_INPUT
+            return
+        end if
+        s2 = open_output('', text, tmp)
+        call text%add(path // ': ' // str(nprog) // trim(merge(' program, ', ' programs,', &
+            nprog == 1)) // ' ' // str(nblocks) // trim(merge(' block, ', ' blocks,', nblocks == 1)) // &
+            ' no tape error')
+        status = close_output('', text, tmp)
+    end function run_check
 
 end module em703_commands

@@ -1,0 +1,142 @@
+"""`em703 gcode --dialect iso-1970s` (seed 004's block format) and
+`em703 check` (its reader's check): every example job and tape gives a
+program of numbered blocks of at most 999 a program that passes the check,
+whose increments trace the same points as the LinuxCNC program, punched on
+ISO and EIA tape; the check finds two codes of one group in a block."""
+
+from __future__ import annotations
+
+import math
+import re
+import subprocess
+from pathlib import Path
+
+BLOCK = re.compile(r"N\d{3}( [GXYZIJFSTM][+-]?\d+)*$")
+
+
+def _em(exe, *args, cwd=None):
+    return subprocess.run([str(exe), *map(str, args)], capture_output=True, cwd=cwd)
+
+
+def iso_points(text: str) -> list[tuple[int, int]]:
+    """Absolute positions (0.001 mm) after every move block of an ISO program."""
+    x = y = 0
+    out = []
+    for line in text.splitlines():
+        if not line.startswith("N"):
+            continue
+        words = dict((w[0], w[1:]) for w in line.split()[1:])
+        if "X" in words:
+            x += int(words["X"])
+            y += int(words["Y"])
+            out.append((x, y))
+    return out
+
+
+def linuxcnc_points(text: str) -> list[tuple[int, int]]:
+    out = []
+    for line in text.splitlines():
+        m = re.search(r"X(-?\d+\.\d+) Y(-?\d+\.\d+)", line)
+        if m and line.startswith("N"):
+            out.append((round(float(m.group(1)) * 1000), round(float(m.group(2)) * 1000)))
+    return out
+
+
+def _programs(text: str) -> list[list[str]]:
+    progs, cur = [], None
+    for line in text.splitlines():
+        if line == "%":
+            if cur is None:
+                cur = []
+            else:
+                progs.append(cur)
+                cur = None
+        elif cur is not None and not line.startswith("("):
+            cur.append(line)
+    assert cur is None
+    return progs
+
+
+def test_example_programs(em703_exe, example_jobs, example_tapes, tmp_path) -> None:
+    for src in list(example_jobs) + list(example_tapes)[:6]:
+        iso = _em(em703_exe, "gcode", "--dialect", "iso-1970s", src)
+        assert iso.returncode == 0, iso.stderr
+        text = iso.stdout.decode("ascii")
+        again = _em(em703_exe, "gcode", "--dialect", "iso-1970s", src)
+        assert again.stdout == iso.stdout                       # byte-identical
+        for line in text.splitlines():
+            assert line == "%" or line.startswith("(") or BLOCK.match(line), (src, line)
+        progs = _programs(text)
+        for prog in progs:
+            nums = [int(b[1:4]) for b in prog]
+            assert nums == list(range(1, len(nums) + 1)) and len(nums) <= 999
+            assert prog[-1].endswith(" M02")
+        # the same points as the LinuxCNC program (the ISO one may split long moves)
+        lin = _em(em703_exe, "gcode", src).stdout.decode("ascii")
+        want, got = linuxcnc_points(lin), iso_points(text)
+        it = iter(got)
+        assert all(any(p == q for q in it) for p in want), src
+        assert (got[-1] == want[-1]) if want else not got
+        prog = tmp_path / "p.iso"
+        prog.write_bytes(iso.stdout)
+        ok = _em(em703_exe, "check", prog)
+        assert ok.returncode == 0 and ok.stdout.decode().endswith(" no tape error\n"), ok.stderr
+        for code in ("iso", "eia"):
+            tape = tmp_path / f"p.{code}.ptp"
+            assert _em(em703_exe, "punch", "--code", code, prog, "-o", tape).returncode == 0
+        from_tape = _em(em703_exe, "check", tmp_path / "p.iso.ptp").stdout
+        assert from_tape.split(b": ", 1)[1] == ok.stdout.split(b": ", 1)[1]
+
+
+def test_long_program_is_cut_into_complete_programs(em703_exe, example_jobs) -> None:
+    """The demo board's job runs past 999 blocks: it becomes several programs,
+    each of at most 999 numbered blocks, each ending with M02; the tool state
+    carries over (raised at a cut, lowered again in the next program)."""
+    biggest = max(example_jobs, key=lambda j: len(_em(em703_exe, "gcode", "--dialect",
+                                                        "iso-1970s", j).stdout))
+    text = _em(em703_exe, "gcode", "--dialect", "iso-1970s", biggest).stdout.decode()
+    progs = _programs(text)
+    assert len(progs) >= 2
+    for prog in progs:
+        assert 1 <= len(prog) <= 999 and prog[0] == "N001 G17" and prog[-1].endswith(" M02")
+        downs = sum(1 for b in prog if "Z-001000" in b) - sum(1 for b in prog if "Z+001000" in b)
+        assert downs == 0                                        # every program ends raised
+
+
+def test_the_feed_codes_of_the_geometric_series() -> None:
+    """1.12**76 = 5503 (the lines' 5500 mm/min), 1.12**65 = 1582 (arcs' 1500:
+    64.53 on the scale, nearest 65); 1.12**99 = 74573, the document's
+    "до 75000 (1,12^99)"."""
+    assert round(math.log(5500) / math.log(1.12)) == 76
+    assert round(math.log(1500) / math.log(1.12)) == 65
+    assert round(1.12 ** 99, -3) == 75000
+
+
+def test_check_finds_codes_of_one_group(em703_exe, tmp_path) -> None:
+    prog = tmp_path / "bad.iso"
+    prog.write_text("%\nN001 G17\nN002 G01 G02 X+001000 Y+000000 F76\nN003 G02 G17 G45 G61 G83"
+                    " X+000000 Y+000000\nN004 M03 M05\nN005 M07\nN006 X+1 Y+000000\n%\n")
+    proc = _em(em703_exe, "check", prog)
+    assert proc.returncode == 1 and proc.stdout == b""
+    lines = proc.stderr.decode("utf-8").splitlines()
+    assert lines == [
+        f"{prog}: block N002 (line 3): ошибка перфоленты (tape error): G01 and G02 are of one group",
+        f"{prog}: block N004 (line 5): ошибка перфоленты (tape error): M03 and M05 are of one group",
+        f"{prog}: block N005 (line 6): M07 is not in the document's table (M00 M02 M03 M04 M05 "
+        "M06 M38 M39 M40)",
+        f"{prog}: block N006 (line 7): the word X+1 is not a sign and six digits"]
+    # the document's own example block, G02 G17 G45 G61 G83, is one of each group
+
+
+def test_check_of_a_tape_with_a_parity_error(em703_exe, tmp_path) -> None:
+    prog = tmp_path / "p.iso"
+    prog.write_text("%\nN001 G17\nN002 M02\n%\n")
+    tape = tmp_path / "p.ptp"
+    assert _em(em703_exe, "punch", "--code", "iso", prog, "-o", tape).returncode == 0
+    data = bytearray(tape.read_bytes())
+    data[25] ^= 1
+    tape.write_bytes(bytes(data))
+    proc = _em(em703_exe, "check", tape)
+    assert proc.returncode == 1
+    assert proc.stderr.decode() == f"{tape}: row 26: parity error (odd number of holes): not an " \
+                                   "ISO tape, or a misread row\n"
