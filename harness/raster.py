@@ -235,6 +235,12 @@ _DISC, _RECT, _SEG, _ARC = range(4)
 PAIRS = 1 << 20
 #: Most tiles held in one batch (boolean pass; a tenth of it with distances).
 BATCH_TILES = 64
+#: Most (item, pixel row) pairs given row spans at once (:meth:`Plan.cover`).
+SPAN_ROWS = 1 << 18
+#: How far (units) the levels of :meth:`Plan.cover`'s sure and possible
+#: intervals lie below and above the level asked: some 1e7 times the
+#: rounding of a distance on a field of 10^5 units, and a few nanometres.
+SPAN_MARGIN = 1e-3
 
 
 @dataclass
@@ -397,6 +403,102 @@ class ShapeSet:
             ring[part] = np.where(t <= np.abs(sweep), ring[part], ends)
         ring -= col(5)
         return ring
+
+    def row_spans(self, items: np.ndarray, y: np.ndarray, level: float
+                  ) -> tuple[np.ndarray, np.ndarray]:
+        """Where each item's term of the signed distance is at most
+        ``level`` on the line of ordinate ``y`` (one line per item), in
+        exact arithmetic: two x intervals per item, ``lo[k]`` to ``hi[k]``
+        for k = 0, 1 (empty where lo > hi; they may overlap), computed
+        analytically: a disc, a rounded rectangle and a segment's capsule
+        meet a line in one interval, an annulus in two.  An arc that is
+        not a full circle gives the intervals of its full annulus (the arc
+        lies within it: a point near an end of the arc is as near the
+        circle).  The ends carry rounding errors of about 1e-16 of the
+        coordinates, far below the margin :meth:`Plan.cover` allows."""
+        n = items.size
+        lo = np.full((2, n), np.inf)
+        hi = np.full((2, n), -np.inf)
+        kind = self.kind[items]
+        for k in np.unique(kind).tolist():
+            sel = np.flatnonzero(kind == k) if kind.min() != kind.max() else slice(None)
+            it = items[sel]
+            yy = y[sel]
+
+            def col(c: int) -> np.ndarray:
+                return self.cols[c][it]
+
+            if k == _DISC:
+                r = col(2) + level
+                dy = yy - col(1)
+                h2 = r * r - dy * dy
+                ok = (r >= 0) & (h2 >= 0)
+                h = np.sqrt(np.where(ok, h2, 0.0))
+                cx = col(0)
+                lo[0, sel] = np.where(ok, cx - h, np.inf)
+                hi[0, sel] = np.where(ok, cx + h, -np.inf)
+            elif k == _RECT:
+                r = col(4) + level
+                qy = np.abs(yy - col(1)) - col(3)
+                a = col(2)
+                pos = r >= 0
+                bulge = np.sqrt(np.maximum(r * r - qy * qy, 0.0))
+                half = np.where(pos, a + np.where(qy <= 0, r, bulge), a + r)
+                ok = (qy <= r) & (half >= 0)
+                cx = col(0)
+                lo[0, sel] = np.where(ok, cx - half, np.inf)
+                hi[0, sel] = np.where(ok, cx + half, -np.inf)
+            elif k == _SEG:
+                ax, ay, ex, ey, ee = col(0), col(1), col(2), col(3), col(4)
+                r = col(5) + level
+                length = np.sqrt(ee)
+                dy = yy - ay
+                inf = np.full(dy.shape, np.inf)
+                # the band: 0 <= t <= 1 and |perpendicular distance| <= r
+                with np.errstate(divide="ignore", invalid="ignore"):
+                    ta = np.where(ex != 0, (0.0 - dy * ey) / ex, -inf)
+                    tb = np.where(ex != 0, (ee - dy * ey) / ex, inf)
+                    t_all = (dy * ey >= 0) & (dy * ey <= ee)
+                    pa = np.where(ey != 0, (dy * ex - r * length) / ey, -inf)
+                    pb = np.where(ey != 0, (dy * ex + r * length) / ey, inf)
+                    p_all = np.abs(dy * ex) <= r * length
+                b_lo = np.maximum(np.where(ex != 0, np.minimum(ta, tb), np.where(t_all, -inf, inf)),
+                                  np.where(ey != 0, np.minimum(pa, pb), np.where(p_all, -inf, inf)))
+                b_hi = np.minimum(np.where(ex != 0, np.maximum(ta, tb), np.where(t_all, inf, -inf)),
+                                  np.where(ey != 0, np.maximum(pa, pb), np.where(p_all, inf, -inf)))
+                b_lo = ax + b_lo
+                b_hi = ax + b_hi
+                empty = b_lo > b_hi
+                s_lo = np.where(empty, inf, b_lo)
+                s_hi = np.where(empty, -inf, b_hi)
+                # the round ends: discs about both ends
+                for px, py in ((ax, ay), (ax + ex, ay + ey)):
+                    d = yy - py
+                    h2 = r * r - d * d
+                    ok = h2 >= 0
+                    h = np.sqrt(np.where(ok, h2, 0.0))
+                    s_lo = np.minimum(s_lo, np.where(ok, px - h, inf))
+                    s_hi = np.maximum(s_hi, np.where(ok, px + h, -inf))
+                neg = r < 0
+                lo[0, sel] = np.where(neg, inf, s_lo)
+                hi[0, sel] = np.where(neg, -inf, s_hi)
+            else:
+                w = col(5) + level
+                rad = col(2)
+                dy = yy - col(1)
+                ro = rad + w
+                ri = rad - w
+                o2 = ro * ro - dy * dy
+                i2 = ri * ri - dy * dy
+                ok = (w >= 0) & (o2 >= 0)
+                o = np.sqrt(np.where(ok, o2, 0.0))
+                i = np.sqrt(np.where((ri > 0) & (i2 > 0), i2, 0.0))
+                cx = col(0)
+                lo[0, sel] = np.where(ok, cx - o, np.inf)
+                hi[0, sel] = np.where(ok, cx - i, -np.inf)
+                lo[1, sel] = np.where(ok, cx + i, np.inf)
+                hi[1, sel] = np.where(ok, cx + o, -np.inf)
+        return lo, hi
 
     def nearest(self, x: np.ndarray, y: np.ndarray, upto: int | None = None
                 ) -> tuple[np.ndarray, np.ndarray]:
@@ -612,20 +714,26 @@ class Plan:
         return ((np.minimum(g.nx, (ti + 1) * TILE) - ti * TILE)
                 * (np.minimum(g.ny, (tj + 1) * TILE) - tj * TILE))
 
+    def _entries(self, batch: np.ndarray, ideal: bool) -> tuple[np.ndarray, np.ndarray]:
+        """The (tile, item) entries of a batch of tiles with a non-empty
+        window, ideal or drawn: (entry indices, slot of each entry's tile
+        in the batch)."""
+        es = self._entry_start
+        lo, hi = es[self.start[batch]], es[self.start[batch + 1]]
+        n = hi - lo
+        ents = (np.arange(int(n.sum())) - np.repeat(np.cumsum(n) - n - lo, n)).astype(np.int64)
+        slot = np.repeat(np.arange(batch.size), n)
+        own = self.set.owner[self._item[ents]]
+        keep = ((own < self.n_ideal) if ideal else (own >= self.n_ideal)) & (self._cost[ents] > 0)
+        return ents[keep], slot[keep]
+
     def pairs(self, batch: np.ndarray, ideal: bool, owners: bool = False
               ) -> Iterator[tuple[np.ndarray, np.ndarray | None, np.ndarray]]:
         """The (pixel, shape) pairs of a batch of tiles, ideal or drawn
         shapes, in chunks of about :data:`PAIRS`: (flat pixel index into
         a (len(batch), TILE, TILE) array, shape index (if ``owners``, else
         None), signed distance)."""
-        es = self._entry_start
-        lo, hi = es[self.start[batch]], es[self.start[batch + 1]]
-        ents = np.concatenate([np.arange(a, b) for a, b in zip(lo.tolist(), hi.tolist())]) \
-            if batch.size else np.zeros(0, dtype=np.int64)
-        slot = np.repeat(np.arange(batch.size), hi - lo)
-        own = self.set.owner[self._item[ents]]
-        keep = ((own < self.n_ideal) if ideal else (own >= self.n_ideal)) & (self._cost[ents] > 0)
-        ents, slot = ents[keep], slot[keep]
+        ents, slot = self._entries(batch, ideal)
         if not ents.size:
             return
         kind = self.set.kind[self._item[ents]]
@@ -660,20 +768,102 @@ class Plan:
             pix += li
             yield pix, (self.set.owner[items] if owners else None), d
 
+    def cover(self, batch: np.ndarray, ideal: bool, level: float) -> np.ndarray:
+        """Booleans of a batch, flat (len(batch) * TILE * TILE): where some
+        ideal (or drawn) shape's signed distance is at most ``level``,
+        exactly as evaluating every (pixel, shape) pair of :meth:`pairs`
+        would find, at the cost of the rows, not the pixels, of each shape.
+
+        Each item meets each pixel row of its window in at most two
+        intervals (:meth:`ShapeSet.row_spans`).  Those of the level lowered
+        by :data:`SPAN_MARGIN` hold only pixels whose distance, evaluated,
+        is surely at most ``level`` (the rounding of both is far smaller
+        than the margin); those of the level raised by it hold every pixel
+        whose distance surely is.  The first are filled whole (a +1 at
+        each start and a -1 after each end, summed along the row), the
+        pixels between the two are evaluated with :meth:`ShapeSet.item_sdf`
+        as :meth:`pairs` does: the pixels on or near an outline, such as
+        the centres that lie exactly on it.  An arc that is not a full
+        circle has all its annulus's pixels evaluated."""
+        size = batch.size * TILE * TILE
+        ents, slot = self._entries(batch, ideal)
+        out = np.zeros(size, dtype=bool)
+        if not ents.size:
+            return out
+        starts: list[np.ndarray] = []
+        stops: list[np.ndarray] = []
+        win = self._win[ents]
+        rows = win[:, 1] - win[:, 0]
+        bounds = np.flatnonzero(np.diff(np.cumsum(rows) // SPAN_ROWS)) + 1
+        p = self.pitch
+        for e_idx in np.split(np.arange(ents.size), bounds):
+            if not e_idx.size:
+                continue
+            e, sl = ents[e_idx], slot[e_idx]
+            j0, _, i0, i1 = win[e_idx].T
+            cnt = rows[e_idx]
+            rep = np.repeat(np.arange(e.size), cnt)
+            lj = np.arange(rep.size) - np.repeat(np.cumsum(cnt) - cnt, cnt) + j0[rep]
+            items = self._item[e][rep]
+            y = (lj + 0.5) * p
+            y += self._ty0[e][rep]
+            tx0 = self._tx0[e][rep]
+            first, last = i0[rep], i1[rep] - 1
+            partial = (self.set.kind[items] == _ARC) & (self.set.cols[6][items] == 0)
+
+            def pixels(lo: np.ndarray, hi: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+                # pixel columns whose centres lie in [lo, hi], clipped to the window
+                a = np.ceil(np.clip((lo - tx0) / p - 0.5, -1.0, TILE + 1.0))
+                b = np.floor(np.clip((hi - tx0) / p - 0.5, -2.0, TILE + 1.0))
+                return (np.maximum(a.astype(np.int64), first),
+                        np.minimum(b.astype(np.int64), last))
+
+            s_lo, s_hi = self.set.row_spans(items, y, level - SPAN_MARGIN)
+            c_lo, c_hi = self.set.row_spans(items, y, level + SPAN_MARGIN)
+            base = (sl[rep] * TILE + lj) * (TILE + 1)
+            amb_row: list[np.ndarray] = []
+            amb_a: list[np.ndarray] = []
+            amb_b: list[np.ndarray] = []
+            for k in range(2):
+                sa, sb = pixels(s_lo[k], s_hi[k])
+                ca, cb = pixels(c_lo[k], c_hi[k])
+                sure = (sa <= sb) & ~partial
+                starts.append(base[sure] + sa[sure])
+                stops.append(base[sure] + sb[sure] + 1)
+                # the pixels between: all of the wide interval where the
+                # narrow one is empty, else its two ends
+                whole = ~sure & (ca <= cb)
+                left = sure & (ca < sa)
+                right = sure & (sb < cb)
+                amb_row += [np.flatnonzero(whole), np.flatnonzero(left), np.flatnonzero(right)]
+                amb_a += [ca[whole], ca[left], sb[right] + 1]
+                amb_b += [cb[whole], sa[left] - 1, cb[right]]
+            r_ = np.concatenate(amb_row)
+            if r_.size:
+                a_, b_ = np.concatenate(amb_a), np.concatenate(amb_b)
+                n = b_ - a_ + 1
+                at = np.repeat(r_, n)
+                li = np.arange(at.size) - np.repeat(np.cumsum(n) - n, n) + np.repeat(a_, n)
+                x = (li + 0.5) * p
+                x += tx0[at]
+                d = self.set.item_sdf(items[at], x, y[at])
+                hit = d <= level
+                out[(sl[rep][at[hit]] * TILE + lj[at[hit]]) * TILE + li[hit]] = True
+        n_diff = batch.size * TILE * (TILE + 1)
+        diff = np.bincount(np.concatenate(starts), minlength=n_diff).astype(np.int32)
+        diff -= np.bincount(np.concatenate(stops), minlength=n_diff).astype(np.int32)
+        cov = np.cumsum(diff.reshape(batch.size, TILE, TILE + 1), axis=2, dtype=np.int32)
+        out |= (cov[:, :, :TILE] > 0).ravel()
+        return out
+
     def flags(self, batch: np.ndarray, tol: float
               ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         """Booleans of a batch, (len(batch), TILE, TILE): drawn (a drawn
         shape at distance <= 0), inside the ideal shrunk by ``tol``, inside
         the ideal grown by ``tol``."""
-        size = batch.size * TILE * TILE
-        on = np.zeros(size, dtype=bool)
-        inner = np.zeros(size, dtype=bool)
-        near = np.zeros(size, dtype=bool)
-        for pix, _, d in self.pairs(batch, False):
-            on[pix[d <= 0]] = True
-        for pix, _, d in self.pairs(batch, True):
-            inner[pix[d <= -tol]] = True
-            near[pix[d <= tol]] = True
+        on = self.cover(batch, False, 0.0)
+        inner = self.cover(batch, True, -tol)
+        near = self.cover(batch, True, tol)
         shape = (batch.size, TILE, TILE)
         return on.reshape(shape), inner.reshape(shape), near.reshape(shape)
 
