@@ -241,6 +241,8 @@ SPAN_ROWS = 1 << 18
 #: intervals lie below and above the level asked: some 1e7 times the
 #: rounding of a distance on a field of 10^5 units, and a few nanometres.
 SPAN_MARGIN = 1e-3
+#: Most pixels of spans filled at once.
+PAINT = 1 << 22
 
 
 @dataclass
@@ -779,8 +781,7 @@ class Plan:
         by :data:`SPAN_MARGIN` hold only pixels whose distance, evaluated,
         is surely at most ``level`` (the rounding of both is far smaller
         than the margin); those of the level raised by it hold every pixel
-        whose distance surely is.  The first are filled whole (a +1 at
-        each start and a -1 after each end, summed along the row), the
+        whose distance surely is.  The first are filled whole, the
         pixels between the two are evaluated with :meth:`ShapeSet.item_sdf`
         as :meth:`pairs` does: the pixels on or near an outline, such as
         the centres that lie exactly on it.  An arc that is not a full
@@ -790,8 +791,6 @@ class Plan:
         out = np.zeros(size, dtype=bool)
         if not ents.size:
             return out
-        starts: list[np.ndarray] = []
-        stops: list[np.ndarray] = []
         win = self._win[ents]
         rows = win[:, 1] - win[:, 0]
         bounds = np.flatnonzero(np.diff(np.cumsum(rows) // SPAN_ROWS)) + 1
@@ -820,7 +819,7 @@ class Plan:
 
             s_lo, s_hi = self.set.row_spans(items, y, level - SPAN_MARGIN)
             c_lo, c_hi = self.set.row_spans(items, y, level + SPAN_MARGIN)
-            base = (sl[rep] * TILE + lj) * (TILE + 1)
+            base = (sl[rep] * TILE + lj) * TILE
             amb_row: list[np.ndarray] = []
             amb_a: list[np.ndarray] = []
             amb_b: list[np.ndarray] = []
@@ -828,8 +827,7 @@ class Plan:
                 sa, sb = pixels(s_lo[k], s_hi[k])
                 ca, cb = pixels(c_lo[k], c_hi[k])
                 sure = (sa <= sb) & ~partial
-                starts.append(base[sure] + sa[sure])
-                stops.append(base[sure] + sb[sure] + 1)
+                _paint(out, base[sure] + sa[sure], sb[sure] - sa[sure] + 1)
                 # the pixels between: all of the wide interval where the
                 # narrow one is empty, else its two ends
                 whole = ~sure & (ca <= cb)
@@ -848,12 +846,7 @@ class Plan:
                 x += tx0[at]
                 d = self.set.item_sdf(items[at], x, y[at])
                 hit = d <= level
-                out[(sl[rep][at[hit]] * TILE + lj[at[hit]]) * TILE + li[hit]] = True
-        n_diff = batch.size * TILE * (TILE + 1)
-        diff = np.bincount(np.concatenate(starts), minlength=n_diff).astype(np.int32)
-        diff -= np.bincount(np.concatenate(stops), minlength=n_diff).astype(np.int32)
-        cov = np.cumsum(diff.reshape(batch.size, TILE, TILE + 1), axis=2, dtype=np.int32)
-        out |= (cov[:, :, :TILE] > 0).ravel()
+                out[base[at[hit]] + li[hit]] = True
         return out
 
     def flags(self, batch: np.ndarray, tol: float
@@ -884,6 +877,23 @@ class Plan:
         which[which == np.iinfo(np.int64).max] = -1
         shape = (batch.size, TILE, TILE)
         return best.reshape(shape), which.reshape(shape)
+
+
+def _paint(out: np.ndarray, start: np.ndarray, length: np.ndarray) -> None:
+    """Set ``out[start[k]:start[k] + length[k]]`` for every k (lengths > 0),
+    at most :data:`PAINT` pixels at a time."""
+    if not start.size:
+        return
+    ends = np.cumsum(length)
+    cuts = np.searchsorted(ends, np.arange(PAINT, int(ends[-1]), PAINT), side="right")
+    for st, ln in zip(np.split(start, cuts), np.split(length, cuts)):
+        if not st.size:
+            continue
+        ln = ln.astype(np.int32)
+        first = np.cumsum(ln) - ln
+        idx = np.arange(int(first[-1] + ln[-1]), dtype=np.int32)
+        idx += np.repeat((st - first).astype(np.int32), ln)
+        out[idx] = True
 
 
 def clip_tiles(grid: Grid, clip: Box | None) -> tuple[int, int, int, int] | None:
@@ -965,13 +975,15 @@ def compare(run: Run, tool: float, layer: Layer | Sequence[AnyShape], tol: float
     done = 0
     for batch in pl.batches():
         on, inner, near = pl.flags(batch, tol)
-        holes = inner & ~on
-        excess = on & ~near
+        holes = inner > on                  # inner and not drawn
+        excess = on > near                  # drawn and not near
         counted += int(pl.tile_pixels(batch).sum())
-        n_drawn += int(on.sum())
-        n_holes += int(holes.sum())
-        n_excess += int(excess.sum())
-        differ += batch[(holes | excess).any(axis=(1, 2))].tolist()
+        n_drawn += int(np.count_nonzero(on))
+        h, e = int(np.count_nonzero(holes)), int(np.count_nonzero(excess))
+        n_holes += h
+        n_excess += e
+        if h or e:
+            differ += batch[(holes | excess).any(axis=(1, 2))].tolist()
         done += batch.size
         if progress is not None:
             progress(done, pl.keys.size)
