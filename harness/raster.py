@@ -245,6 +245,57 @@ SPAN_MARGIN = 1e-3
 PAINT = 1 << 22
 
 
+def _upright_spans(ax: np.ndarray, ay: np.ndarray, ex: np.ndarray, ey: np.ndarray,
+                   r: np.ndarray, y: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """The x interval where the line of ordinate ``y`` meets the points
+    within ``r`` of an upright segment (ex or ey zero), from (ax, ay) by
+    (ex, ey): its box grown by r with round corners (empty: lo > hi)."""
+    a = np.abs(ex) / 2
+    cx = ax + ex / 2
+    qy = np.abs(y - (ay + ey / 2)) - np.abs(ey) / 2
+    bulge = np.sqrt(np.maximum(r * r - qy * qy, 0.0))
+    half = a + np.where(qy <= 0, r, bulge)
+    ok = (r >= 0) & (qy <= r)
+    return np.where(ok, cx - half, np.inf), np.where(ok, cx + half, -np.inf)
+
+
+def _capsule_spans(ax: np.ndarray, ay: np.ndarray, ex: np.ndarray, ey: np.ndarray,
+                   ee: np.ndarray, r: np.ndarray, yy: np.ndarray
+                   ) -> tuple[np.ndarray, np.ndarray]:
+    """The x interval where the line of ordinate ``yy`` meets the points
+    within ``r`` of the segment from (ax, ay) by (ex, ey), ee = ex^2 + ey^2
+    (empty: lo > hi): the band along it, and the discs about its ends."""
+    length = np.sqrt(ee)
+    dy = yy - ay
+    inf = np.full(dy.shape, np.inf)
+    # the band: 0 <= t <= 1 and |perpendicular distance| <= r
+    with np.errstate(divide="ignore", invalid="ignore"):
+        ta = np.where(ex != 0, (0.0 - dy * ey) / ex, -inf)
+        tb = np.where(ex != 0, (ee - dy * ey) / ex, inf)
+        t_all = (dy * ey >= 0) & (dy * ey <= ee)
+        pa = np.where(ey != 0, (dy * ex - r * length) / ey, -inf)
+        pb = np.where(ey != 0, (dy * ex + r * length) / ey, inf)
+        p_all = np.abs(dy * ex) <= r * length
+    b_lo = np.maximum(np.where(ex != 0, np.minimum(ta, tb), np.where(t_all, -inf, inf)),
+                      np.where(ey != 0, np.minimum(pa, pb), np.where(p_all, -inf, inf)))
+    b_hi = np.minimum(np.where(ex != 0, np.maximum(ta, tb), np.where(t_all, inf, -inf)),
+                      np.where(ey != 0, np.maximum(pa, pb), np.where(p_all, inf, -inf)))
+    b_lo = ax + b_lo
+    b_hi = ax + b_hi
+    empty = b_lo > b_hi
+    s_lo = np.where(empty, inf, b_lo)
+    s_hi = np.where(empty, -inf, b_hi)
+    # the round ends: discs about both ends
+    for px, py in ((ax, ay), (ax + ex, ay + ey)):
+        d = yy - py
+        h2 = r * r - d * d
+        ok = h2 >= 0
+        h = np.sqrt(np.where(ok, h2, 0.0))
+        s_lo = np.minimum(s_lo, np.where(ok, px - h, inf))
+        s_hi = np.maximum(s_hi, np.where(ok, px + h, -inf))
+    return s_lo, s_hi
+
+
 @dataclass
 class ShapeSet:
     """Shapes as arrays, for evaluating many (point, shape) pairs with one
@@ -267,6 +318,105 @@ class ShapeSet:
 
     @classmethod
     def of(cls, shapes: Sequence[AnyShape]) -> ShapeSet:
+        n = len(shapes)
+        types = [type(s) for s in shapes]
+        if not all(t in (Disc, RoundRect, Stroke, ArcBand) for t in types):
+            bad = next(s for s in shapes if type(s) not in (Disc, RoundRect, Stroke, ArcBand))
+            if not isinstance(bad, (Disc, RoundRect, Stroke, ArcBand)):
+                raise TypeError(f"not a shape: {bad!r}")
+            return cls._of_each(shapes)
+        boxes = np.zeros((n, 4))
+        count = np.ones(n, dtype=np.int64)
+        # the shapes of one item each, a type at a time
+        one: list[tuple[int, np.ndarray, np.ndarray]] = []    # (kind, shape indices, params)
+        disc = np.array([i for i, t in enumerate(types) if t is Disc], dtype=np.int64)
+        if disc.size:
+            q = np.array([(shapes[i].cx, shapes[i].cy, shapes[i].r) for i in disc.tolist()],
+                         dtype=float).reshape(-1, 3)
+            cx, cy, r = q.T
+            boxes[disc] = np.stack([cx - r, cx + r, cy - r, cy + r], axis=1)
+            one.append((_DISC, disc, q))
+        rect = np.array([i for i, t in enumerate(types) if t is RoundRect], dtype=np.int64)
+        if rect.size:
+            q = np.array([(shapes[i].cx, shapes[i].cy, shapes[i].w, shapes[i].h, shapes[i].rc)
+                          for i in rect.tolist()], dtype=float).reshape(-1, 5)
+            cx, cy, w, h, rc = q.T
+            boxes[rect] = np.stack([cx - w / 2, cx + w / 2, cy - h / 2, cy + h / 2], axis=1)
+            one.append((_RECT, rect, np.stack([cx, cy, w / 2 - rc, h / 2 - rc, rc], axis=1)))
+        arc = np.array([i for i, t in enumerate(types) if t is ArcBand], dtype=np.int64)
+        if arc.size:
+            rows = []
+            for i in arc.tolist():
+                a = shapes[i]
+                a1 = a.a0 + a.sweep
+                rows.append((a.cx, a.cy, a.rad, a.a0, a.sweep, a.hw, 1.0 if a.full else 0.0,
+                             a.rad * math.cos(a.a0), a.rad * math.sin(a.a0),
+                             a.rad * math.cos(a1), a.rad * math.sin(a1)))
+            q = np.array(rows, dtype=float).reshape(-1, 11)
+            cx, cy, rad, hw, full = q[:, 0], q[:, 1], q[:, 2], q[:, 5], q[:, 6] != 0
+            boxes[arc] = np.stack([(cx - rad) - hw, (cx + rad) + hw,
+                                   (cy - rad) - hw, (cy + rad) + hw], axis=1)
+            for k in np.flatnonzero(~full).tolist():
+                boxes[arc[k]] = shapes[int(arc[k])].bbox()
+            one.append((_ARC, arc, q))
+        # strokes: a segment an item (a disc if none)
+        strokes = [i for i, t in enumerate(types) if t is Stroke]
+        s_items: list[tuple[float, ...]] = []
+        s_kind: list[int] = []
+        s_box: list[Box] = []
+        s_boxes: list[Box] = []
+        for i in strokes:
+            st = shapes[i]
+            pts = st.points
+            r = st.r
+            s_boxes.append(st.bbox())
+            lead = True
+            c = 0
+            for (ax, ay), (bx, by) in zip(pts, pts[1:]):
+                ex, ey = bx - ax, by - ay
+                ee = ex * ex + ey * ey
+                if ee == 0:
+                    continue
+                s_kind.append(_SEG)
+                s_items.append((ax, ay, ex, ey, ee, r, 1.0 if lead else 0.0,
+                                pts[0][0], pts[0][1]))
+                s_box.append((min(ax, bx) - r, max(ax, bx) + r,
+                              min(ay, by) - r, max(ay, by) + r))
+                lead = False
+                c += 1
+            if lead:                        # no segment: a disc at the first point
+                s_kind.append(_DISC)
+                s_items.append((pts[0][0], pts[0][1], r, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0))
+                s_box.append(s_boxes[-1])
+                c = 1
+            count[i] = c
+        stroke = np.array(strokes, dtype=np.int64)
+        if stroke.size:
+            boxes[stroke] = np.array(s_boxes, dtype=float).reshape(-1, 4)
+        first = np.cumsum(count) - count
+        total = int(count.sum())
+        kind = np.zeros(total, dtype=np.int64)
+        owner = np.repeat(np.arange(n, dtype=np.int64), count)
+        par = np.zeros((12, total))
+        ibox = np.zeros((total, 4))
+        for k, idx, q in one:
+            at = first[idx]
+            kind[at] = k
+            par[:q.shape[1], at] = q.T
+            ibox[at] = boxes[idx]
+        if stroke.size:
+            c = count[stroke]
+            at = (np.repeat(first[stroke], c) + np.arange(int(c.sum()))
+                  - np.repeat(np.cumsum(c) - c, c))
+            kind[at] = s_kind
+            par[:9, at] = np.array(s_items, dtype=float).reshape(-1, 9).T
+            ibox[at] = np.array(s_box, dtype=float).reshape(-1, 4)
+        return cls(n, boxes, kind, owner, par, first, count, ibox)
+
+    @classmethod
+    def _of_each(cls, shapes: Sequence[AnyShape]) -> ShapeSet:
+        """:meth:`of` for shapes of subclasses of the shape types: one at a
+        time."""
         kinds: list[int] = []
         owners: list[int] = []
         pars: list[tuple[float, ...]] = []
@@ -341,7 +491,7 @@ class ShapeSet:
         if kind.min() == kind.max():
             return self._kind_sdf(int(kind[0]), items, x, y)
         out = np.empty(items.size)
-        for k in np.unique(kind).tolist():
+        for k in np.flatnonzero(np.bincount(kind, minlength=4)).tolist():
             sel = np.flatnonzero(kind == k)
             out[sel] = self._kind_sdf(k, items[sel], x[sel], y[sel])
         return out
@@ -422,7 +572,7 @@ class ShapeSet:
         lo = np.full((2, n), np.inf)
         hi = np.full((2, n), -np.inf)
         kind = self.kind[items]
-        for k in np.unique(kind).tolist():
+        for k in np.flatnonzero(np.bincount(kind, minlength=4)).tolist():
             sel = np.flatnonzero(kind == k) if kind.min() != kind.max() else slice(None)
             it = items[sel]
             yy = y[sel]
@@ -451,39 +601,19 @@ class ShapeSet:
                 lo[0, sel] = np.where(ok, cx - half, np.inf)
                 hi[0, sel] = np.where(ok, cx + half, -np.inf)
             elif k == _SEG:
-                ax, ay, ex, ey, ee = col(0), col(1), col(2), col(3), col(4)
+                ax, ay, ex, ey = col(0), col(1), col(2), col(3)
                 r = col(5) + level
-                length = np.sqrt(ee)
-                dy = yy - ay
-                inf = np.full(dy.shape, np.inf)
-                # the band: 0 <= t <= 1 and |perpendicular distance| <= r
-                with np.errstate(divide="ignore", invalid="ignore"):
-                    ta = np.where(ex != 0, (0.0 - dy * ey) / ex, -inf)
-                    tb = np.where(ex != 0, (ee - dy * ey) / ex, inf)
-                    t_all = (dy * ey >= 0) & (dy * ey <= ee)
-                    pa = np.where(ey != 0, (dy * ex - r * length) / ey, -inf)
-                    pb = np.where(ey != 0, (dy * ex + r * length) / ey, inf)
-                    p_all = np.abs(dy * ex) <= r * length
-                b_lo = np.maximum(np.where(ex != 0, np.minimum(ta, tb), np.where(t_all, -inf, inf)),
-                                  np.where(ey != 0, np.minimum(pa, pb), np.where(p_all, -inf, inf)))
-                b_hi = np.minimum(np.where(ex != 0, np.maximum(ta, tb), np.where(t_all, inf, -inf)),
-                                  np.where(ey != 0, np.maximum(pa, pb), np.where(p_all, inf, -inf)))
-                b_lo = ax + b_lo
-                b_hi = ax + b_hi
-                empty = b_lo > b_hi
-                s_lo = np.where(empty, inf, b_lo)
-                s_hi = np.where(empty, -inf, b_hi)
-                # the round ends: discs about both ends
-                for px, py in ((ax, ay), (ax + ex, ay + ey)):
-                    d = yy - py
-                    h2 = r * r - d * d
-                    ok = h2 >= 0
-                    h = np.sqrt(np.where(ok, h2, 0.0))
-                    s_lo = np.minimum(s_lo, np.where(ok, px - h, inf))
-                    s_hi = np.maximum(s_hi, np.where(ok, px + h, -inf))
+                axis = (ex == 0) | (ey == 0)
+                if axis.all():
+                    s_lo, s_hi = _upright_spans(ax, ay, ex, ey, r, yy)
+                else:
+                    s_lo, s_hi = _capsule_spans(ax, ay, ex, ey, col(4), r, yy)
+                    if axis.any():
+                        u = np.flatnonzero(axis)
+                        s_lo[u], s_hi[u] = _upright_spans(ax[u], ay[u], ex[u], ey[u], r[u], yy[u])
                 neg = r < 0
-                lo[0, sel] = np.where(neg, inf, s_lo)
-                hi[0, sel] = np.where(neg, -inf, s_hi)
+                lo[0, sel] = np.where(neg, np.inf, s_lo)
+                hi[0, sel] = np.where(neg, -np.inf, s_hi)
             else:
                 w = col(5) + level
                 rad = col(2)
