@@ -967,11 +967,17 @@ class Plan:
                 amb_a += [ca[whole], ca[left], sb[right] + 1]
                 amb_b += [cb[whole], sa[left] - 1, cb[right]]
             r_ = np.concatenate(amb_row)
-            if r_.size:
-                a_, b_ = np.concatenate(amb_a), np.concatenate(amb_b)
-                n = b_ - a_ + 1
-                at = np.repeat(r_, n)
-                li = np.arange(at.size) - np.repeat(np.cumsum(n) - n, n) + np.repeat(a_, n)
+            if not r_.size:
+                continue
+            a_, b_ = np.concatenate(amb_a), np.concatenate(amb_b)
+            n = b_ - a_ + 1
+            ends = np.cumsum(n)
+            cuts = np.searchsorted(ends, np.arange(PAIRS, int(ends[-1]), PAIRS), side="right")
+            for rr, aa, nn in zip(np.split(r_, cuts), np.split(a_, cuts), np.split(n, cuts)):
+                if not rr.size:
+                    continue
+                at = np.repeat(rr, nn)
+                li = np.arange(at.size) - np.repeat(np.cumsum(nn) - nn, nn) + np.repeat(aa, nn)
                 x = (li + 0.5) * p
                 x += tx0[at]
                 d = self.set.item_sdf(items[at], x, y[at])
