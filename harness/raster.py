@@ -6,9 +6,14 @@ Everything is sampled at pixel centres on a square grid (default pitch
 shapes at once with numpy: a shape whose box lies in one tile is in that
 tile, a larger one in the tiles whose centre is near enough), a batch of
 tiles at a time, so memory is bounded by the batch, not the board.  The
-shapes are arrays (:class:`ShapeSet`): every (pixel, shape) pair of a batch
-is evaluated with one numpy call per kind of shape, the same formula as the
-shape's own ``sdf``.  The pixel budget (:data:`MAX_PIXELS`) only chooses the
+shapes are arrays (:class:`ShapeSet`).  The first pass (drawn, inside the
+shrunk ideal, inside the grown ideal: :meth:`Plan.cover`) fills each
+shape's spans on each pixel row, computed analytically, and evaluates only
+the pixels on or near an outline, with one numpy call per kind of shape
+and the same formula as the shape's own ``sdf``, so it finds exactly the
+pixels that evaluating every (pixel, shape) pair would; the tiles that
+differ are then evaluated pair by pair (:meth:`Plan.distances`) to tell
+where and by how much.  The pixel budget (:data:`MAX_PIXELS`) only chooses the
 pitch: the finest of :data:`PITCHES` whose tiles fit in it, else the
 coarsest (0.04 mm, still below the tolerance); no board is refused for its
 size.  A caller may limit the check to a box (verify: the field).
@@ -238,8 +243,8 @@ BATCH_TILES = 64
 #: Most (item, pixel row) pairs given row spans at once (:meth:`Plan.cover`).
 SPAN_ROWS = 1 << 18
 #: How far (units) the levels of :meth:`Plan.cover`'s sure and possible
-#: intervals lie below and above the level asked: some 1e7 times the
-#: rounding of a distance on a field of 10^5 units, and a few nanometres.
+#: intervals lie below and above the level asked: 10 nm, some 1e7 times
+#: the rounding of a distance on a field of 10^5 units.
 SPAN_MARGIN = 1e-3
 #: Most pixels of spans filled at once.
 PAINT = 1 << 22
