@@ -12,7 +12,10 @@ For each board of :mod:`bench.boards` (uniform, clustered, grid; 100,
 3. compares tours on the same pads (:mod:`bench.tours`): deck order,
    plain nearest neighbour, TENZOR's order read back from its tapes, and
    LKH-3 (elkai) as the reference;
-4. writes ``bench.csv``, ``bench.svg`` and ``bench.txt`` (the table and the
+4. on the boards chosen (``--verify-dists``, ``--verify-min``: the uniform
+   boards of 10 000 pads and more by default), times ``python -m harness
+   verify`` of the deck and TENZOR's tapes and measures its peak memory;
+5. writes ``bench.csv``, ``bench.svg`` and ``bench.txt`` (the table and the
    targets) into the output directory and prints the table.
 
 Timings are wall-clock on a shared 2-core machine: each is the minimum of
@@ -74,8 +77,11 @@ def tape_tours(board: boards.Board, stats: dict[str, measure.TapeStats],
 
 
 def run_board(board: boards.Board, exe: Path, scratch: Path, repeats: int,
-              lkh_max: int, nn_max: int, min_seconds: float = 1.0) -> dict:
-    """Every figure of one board, as a row of the CSV (report.COLUMNS)."""
+              lkh_max: int, nn_max: int, min_seconds: float = 1.0,
+              verify: bool = False) -> dict:
+    """Every figure of one board, as a row of the CSV (report.COLUMNS);
+    with ``verify``, also the time and memory of ``python -m harness
+    verify`` on its deck and TENZOR's tapes (which must pass)."""
     deck = scratch / f"{board.name}.crd"
     text = board.deck()
     write_whole(deck, text)
@@ -88,6 +94,9 @@ def run_board(board: boards.Board, exe: Path, scratch: Path, repeats: int,
         if int(job[f"{key}.rows"]) != st.rows or int(job[f"{key}.frames"]) != st.frames:
             raise RuntimeError(f"{board.name}: job sheet and tape disagree on {key}")
     tour = tape_tours(board, stats, lkh_max, nn_max)
+    checked = measure.time_verify(deck, out) if verify else None
+    if checked is not None and not checked.passed:
+        raise RuntimeError(f"{board.name}: harness verify finds TENZOR's tapes at fault")
     best = min(seconds)
     frames = sum(s.frames for s in stats.values())
     rows = sum(s.rows for s in stats.values())
@@ -116,4 +125,7 @@ def run_board(board: boards.Board, exe: Path, scratch: Path, repeats: int,
         "ref_s": tour["ref_s"], "nn_s": tour["nn_s"],
         "time_vs_ref": best / tour["ref_s"] if tour["ref_s"] else None,
         "pad_travel_m": (stats["small"].travel_mm + stats["large"].travel_mm) / 1000,
+        "verify_s": checked.seconds if checked else None,
+        "verify_cpu_s": checked.cpu if checked else None,
+        "verify_rss_mb": checked.peak_rss_kb / 1024 if checked else None,
     }

@@ -77,6 +77,11 @@ def build_parser() -> argparse.ArgumentParser:
                    help="largest board given to LKH-3 (default 10000)")
     p.add_argument("--nn-max", type=int, default=100000, metavar="N",
                    help="largest board given to the Python nearest neighbour (default 100000)")
+    p.add_argument("--verify-dists", type=_dists, default=["uniform"], metavar="D,D,...",
+                   help="distributions whose boards are also checked by `python -m harness "
+                        "verify`, timed (default uniform)")
+    p.add_argument("--verify-min", type=int, default=10000, metavar="N",
+                   help="smallest board checked by verify (default 10000)")
     p.add_argument("--tenzor", type=Path, metavar="EXE",
                    help="the TENZOR binary to time (default: build the release profile)")
     p.add_argument("--report", type=Path, metavar="CSV",
@@ -133,12 +138,15 @@ def main(argv: Sequence[str] | None = None) -> int:
         for dist in args.dists:
             t = time.perf_counter()
             board = boards.make_board(dist, size)
+            check = dist in args.verify_dists and size >= args.verify_min
             row = run_board(board, exe, scratch, repeats, args.lkh_max, args.nn_max,
-                            args.min_seconds)
+                            args.min_seconds, verify=check)
             rows.append(row)
+            checked = (f"; verify {row['verify_s']:.1f} s, {row['verify_rss_mb']:.0f} MB"
+                       if check else "")
             print(f"  {row['board']}: TENZOR {row['tenzor_s']:.3f} s, "
-                  f"{row['peak_rss_mb']:.1f} MB; board done in {time.perf_counter() - t:.0f} s",
-                  flush=True)
+                  f"{row['peak_rss_mb']:.1f} MB{checked}; board done in "
+                  f"{time.perf_counter() - t:.0f} s", flush=True)
     report.write_csv(rows, out / "bench.csv")
     text = write_outputs(rows, out)
     print()

@@ -18,6 +18,9 @@
 * :func:`read_tapes`: each tape decoded by :mod:`harness.tape` and run by
   :mod:`harness.sim`: frames, rows, drawn and raised length, run time, and
   the rows of the same frames with every cycle unrolled.
+* :func:`time_verify`: ``python -m harness verify`` of a deck and its tapes
+  in a fresh process: wall time, CPU time and peak resident set size (the
+  same ``VmHWM`` reading), and whether it passed.
 """
 
 from __future__ import annotations
@@ -25,6 +28,7 @@ from __future__ import annotations
 import os
 import shutil
 import subprocess
+import sys
 import time
 from contextlib import contextmanager
 from dataclasses import dataclass
@@ -188,3 +192,40 @@ def read_job(path: Path) -> dict[str, str]:
             key, _, value = line.partition("=")
             job[key.strip()] = value.strip()
     return job
+
+
+@dataclass
+class VerifyStats:
+    seconds: float             # wall time
+    cpu: float                 # user + system
+    peak_rss_kb: int
+    passed: bool
+
+
+def time_verify(deck: Path, tapes: Path) -> VerifyStats:
+    """One run of ``python -m harness verify DECK TAPES`` in a fresh process
+    (this Python, from the project's root): wall time, CPU time from
+    ``os.wait4``, and the peak resident set size read from ``VmHWM`` every
+    10 ms (the check runs for seconds; the high-water mark only grows, so
+    the last reading is within 10 ms of the end).  Raises RuntimeError if
+    it exits with neither 0 (PASS) nor 1 (FAIL)."""
+    root = Path(__file__).resolve().parents[1]
+    t = time.perf_counter()
+    proc = subprocess.Popen([sys.executable, "-m", "harness", "verify", str(deck), str(tapes)],
+                            cwd=root, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE)
+    peak = 0
+    while True:
+        hwm = _hwm_kb(proc.pid)
+        if hwm is not None:
+            peak = max(peak, hwm)
+        pid, status, usage = os.wait4(proc.pid, os.WNOHANG)
+        if pid:
+            break
+        time.sleep(0.01)
+    seconds = time.perf_counter() - t
+    proc.returncode = code = os.waitstatus_to_exitcode(status)
+    err = proc.stderr.read().decode(errors="replace") if proc.stderr else ""
+    proc.stderr.close()
+    if code not in (0, 1):
+        raise RuntimeError(f"harness verify {deck} exited {code}: {err.strip()[-500:]}")
+    return VerifyStats(seconds, usage.ru_utime + usage.ru_stime, peak, code == 0)

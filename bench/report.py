@@ -49,6 +49,10 @@ COLUMNS: dict[str, str] = {
     "nn_s": "nearest neighbour seconds (Python)",
     "time_vs_ref": "tenzor_s / ref_s",
     "pad_travel_m": "TENZOR's raised travel on the two pad tapes (simulated: also inside rows), m",
+    "verify_s": "python -m harness verify of the deck and TENZOR's tapes, wall seconds, one run "
+                "(blank: not checked, see --verify-dists, --verify-min)",
+    "verify_cpu_s": "the same run's CPU time (user + system)",
+    "verify_rss_mb": "its peak resident set size, MiB (VmHWM)",
 }
 
 #: The targets of docs/PERFORMANCE.md: 100 000 pads in 2 s, a tour within 5 % of LKH-3's.
@@ -57,6 +61,9 @@ TARGET_TOUR_RATIO = 1.05
 TARGET_TIME_RATIO = 0.10
 TARGET_CYCLE_RATIO = 0.60
 TARGET_RSS_MB_100K = 200.0
+#: The oracle's targets: ``harness verify`` of 100 000 pads in under 60 s and 2 GB.
+TARGET_VERIFY_S_100K = 60.0
+TARGET_VERIFY_MB_100K = 2048.0
 
 
 def _fmt(value: object) -> str:
@@ -96,6 +103,7 @@ TABLE: tuple[tuple[str, str, str], ...] = (
     ("TENZOR m", "tour_tenzor_m", ".2f"), ("LKH m", "tour_ref_m", ".2f"),
     ("T/LKH", "tenzor_vs_ref", ".3f"), ("NN/LKH", "nn_vs_ref", ".3f"),
     ("LKH s", "ref_s", ".3g"), ("Ts/LKHs", "time_vs_ref", ".4f"),
+    ("verify s", "verify_s", ".1f"), ("verify MB", "verify_rss_mb", ".0f"),
 )
 
 
@@ -190,6 +198,15 @@ def targets(rows: Sequence[dict]) -> list[tuple[str, bool | None, str]]:
         out.append((f"peak memory < {TARGET_RSS_MB_100K:g} MB at 100 000 pads",
                     worst < TARGET_RSS_MB_100K,
                     ", ".join(f"{r['board']} {_num(r, 'peak_rss_mb'):.1f} MB" for r in big)))
+    checked = [r for r in big if _num(r, "verify_s") is not None]
+    if checked:
+        out.append((f"harness verify of 100 000 pads < {TARGET_VERIFY_S_100K:g} s and "
+                    f"< {TARGET_VERIFY_MB_100K / 1024:g} GB",
+                    all(_num(r, "verify_s") < TARGET_VERIFY_S_100K
+                        and _num(r, "verify_rss_mb") < TARGET_VERIFY_MB_100K for r in checked),
+                    ", ".join(f"{r['board']} {_num(r, 'verify_s'):.1f} s "
+                              f"(CPU {_num(r, 'verify_cpu_s'):.1f} s), "
+                              f"{_num(r, 'verify_rss_mb'):.0f} MB" for r in checked)))
     for dist in sorted({r["dist"] for r in rows}):
         pts = sorted((int(float(r["pads"])), _num(r, "peak_rss_mb"))
                      for r in rows if r["dist"] == dist)

@@ -6,9 +6,14 @@ Everything is sampled at pixel centres on a square grid (default pitch
 shapes at once with numpy: a shape whose box lies in one tile is in that
 tile, a larger one in the tiles whose centre is near enough), a batch of
 tiles at a time, so memory is bounded by the batch, not the board.  The
-shapes are arrays (:class:`ShapeSet`): every (pixel, shape) pair of a batch
-is evaluated with one numpy call per kind of shape, the same formula as the
-shape's own ``sdf``.  The pixel budget (:data:`MAX_PIXELS`) only chooses the
+shapes are arrays (:class:`ShapeSet`).  The first pass (drawn, inside the
+shrunk ideal, inside the grown ideal: :meth:`Plan.cover`) fills each
+shape's spans on each pixel row, computed analytically, and evaluates only
+the pixels on or near an outline, with one numpy call per kind of shape
+and the same formula as the shape's own ``sdf``, so it finds exactly the
+pixels that evaluating every (pixel, shape) pair would; the tiles that
+differ are then evaluated pair by pair (:meth:`Plan.distances`) to tell
+where and by how much.  The pixel budget (:data:`MAX_PIXELS`) only chooses the
 pitch: the finest of :data:`PITCHES` whose tiles fit in it, else the
 coarsest (0.04 mm, still below the tolerance); no board is refused for its
 size.  A caller may limit the check to a box (verify: the field).
@@ -235,6 +240,65 @@ _DISC, _RECT, _SEG, _ARC = range(4)
 PAIRS = 1 << 20
 #: Most tiles held in one batch (boolean pass; a tenth of it with distances).
 BATCH_TILES = 64
+#: Most (item, pixel row) pairs given row spans at once (:meth:`Plan.cover`).
+SPAN_ROWS = 1 << 18
+#: How far (units) the levels of :meth:`Plan.cover`'s sure and possible
+#: intervals lie below and above the level asked: 10 nm, some 1e7 times
+#: the rounding of a distance on a field of 10^5 units.
+SPAN_MARGIN = 1e-3
+#: Most pixels of spans filled at once.
+PAINT = 1 << 22
+
+
+def _upright_spans(ax: np.ndarray, ay: np.ndarray, ex: np.ndarray, ey: np.ndarray,
+                   r: np.ndarray, y: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """The x interval where the line of ordinate ``y`` meets the points
+    within ``r`` of an upright segment (ex or ey zero), from (ax, ay) by
+    (ex, ey): its box grown by r with round corners (empty: lo > hi)."""
+    a = np.abs(ex) / 2
+    cx = ax + ex / 2
+    qy = np.abs(y - (ay + ey / 2)) - np.abs(ey) / 2
+    bulge = np.sqrt(np.maximum(r * r - qy * qy, 0.0))
+    half = a + np.where(qy <= 0, r, bulge)
+    ok = (r >= 0) & (qy <= r)
+    return np.where(ok, cx - half, np.inf), np.where(ok, cx + half, -np.inf)
+
+
+def _capsule_spans(ax: np.ndarray, ay: np.ndarray, ex: np.ndarray, ey: np.ndarray,
+                   ee: np.ndarray, r: np.ndarray, yy: np.ndarray
+                   ) -> tuple[np.ndarray, np.ndarray]:
+    """The x interval where the line of ordinate ``yy`` meets the points
+    within ``r`` of the segment from (ax, ay) by (ex, ey), ee = ex^2 + ey^2
+    (empty: lo > hi): the band along it, and the discs about its ends."""
+    length = np.sqrt(ee)
+    dy = yy - ay
+    inf = np.full(dy.shape, np.inf)
+    # the band: 0 <= t <= 1 and |perpendicular distance| <= r
+    with np.errstate(divide="ignore", invalid="ignore"):
+        ta = np.where(ex != 0, (0.0 - dy * ey) / ex, -inf)
+        tb = np.where(ex != 0, (ee - dy * ey) / ex, inf)
+        t_all = (dy * ey >= 0) & (dy * ey <= ee)
+        pa = np.where(ey != 0, (dy * ex - r * length) / ey, -inf)
+        pb = np.where(ey != 0, (dy * ex + r * length) / ey, inf)
+        p_all = np.abs(dy * ex) <= r * length
+    b_lo = np.maximum(np.where(ex != 0, np.minimum(ta, tb), np.where(t_all, -inf, inf)),
+                      np.where(ey != 0, np.minimum(pa, pb), np.where(p_all, -inf, inf)))
+    b_hi = np.minimum(np.where(ex != 0, np.maximum(ta, tb), np.where(t_all, inf, -inf)),
+                      np.where(ey != 0, np.maximum(pa, pb), np.where(p_all, inf, -inf)))
+    b_lo = ax + b_lo
+    b_hi = ax + b_hi
+    empty = b_lo > b_hi
+    s_lo = np.where(empty, inf, b_lo)
+    s_hi = np.where(empty, -inf, b_hi)
+    # the round ends: discs about both ends
+    for px, py in ((ax, ay), (ax + ex, ay + ey)):
+        d = yy - py
+        h2 = r * r - d * d
+        ok = h2 >= 0
+        h = np.sqrt(np.where(ok, h2, 0.0))
+        s_lo = np.minimum(s_lo, np.where(ok, px - h, inf))
+        s_hi = np.maximum(s_hi, np.where(ok, px + h, -inf))
+    return s_lo, s_hi
 
 
 @dataclass
@@ -259,6 +323,105 @@ class ShapeSet:
 
     @classmethod
     def of(cls, shapes: Sequence[AnyShape]) -> ShapeSet:
+        n = len(shapes)
+        types = [type(s) for s in shapes]
+        if not all(t in (Disc, RoundRect, Stroke, ArcBand) for t in types):
+            bad = next(s for s in shapes if type(s) not in (Disc, RoundRect, Stroke, ArcBand))
+            if not isinstance(bad, (Disc, RoundRect, Stroke, ArcBand)):
+                raise TypeError(f"not a shape: {bad!r}")
+            return cls._of_each(shapes)
+        boxes = np.zeros((n, 4))
+        count = np.ones(n, dtype=np.int64)
+        # the shapes of one item each, a type at a time
+        one: list[tuple[int, np.ndarray, np.ndarray]] = []    # (kind, shape indices, params)
+        disc = np.array([i for i, t in enumerate(types) if t is Disc], dtype=np.int64)
+        if disc.size:
+            q = np.array([(shapes[i].cx, shapes[i].cy, shapes[i].r) for i in disc.tolist()],
+                         dtype=float).reshape(-1, 3)
+            cx, cy, r = q.T
+            boxes[disc] = np.stack([cx - r, cx + r, cy - r, cy + r], axis=1)
+            one.append((_DISC, disc, q))
+        rect = np.array([i for i, t in enumerate(types) if t is RoundRect], dtype=np.int64)
+        if rect.size:
+            q = np.array([(shapes[i].cx, shapes[i].cy, shapes[i].w, shapes[i].h, shapes[i].rc)
+                          for i in rect.tolist()], dtype=float).reshape(-1, 5)
+            cx, cy, w, h, rc = q.T
+            boxes[rect] = np.stack([cx - w / 2, cx + w / 2, cy - h / 2, cy + h / 2], axis=1)
+            one.append((_RECT, rect, np.stack([cx, cy, w / 2 - rc, h / 2 - rc, rc], axis=1)))
+        arc = np.array([i for i, t in enumerate(types) if t is ArcBand], dtype=np.int64)
+        if arc.size:
+            rows = []
+            for i in arc.tolist():
+                a = shapes[i]
+                a1 = a.a0 + a.sweep
+                rows.append((a.cx, a.cy, a.rad, a.a0, a.sweep, a.hw, 1.0 if a.full else 0.0,
+                             a.rad * math.cos(a.a0), a.rad * math.sin(a.a0),
+                             a.rad * math.cos(a1), a.rad * math.sin(a1)))
+            q = np.array(rows, dtype=float).reshape(-1, 11)
+            cx, cy, rad, hw, full = q[:, 0], q[:, 1], q[:, 2], q[:, 5], q[:, 6] != 0
+            boxes[arc] = np.stack([(cx - rad) - hw, (cx + rad) + hw,
+                                   (cy - rad) - hw, (cy + rad) + hw], axis=1)
+            for k in np.flatnonzero(~full).tolist():
+                boxes[arc[k]] = shapes[int(arc[k])].bbox()
+            one.append((_ARC, arc, q))
+        # strokes: a segment an item (a disc if none)
+        strokes = [i for i, t in enumerate(types) if t is Stroke]
+        s_items: list[tuple[float, ...]] = []
+        s_kind: list[int] = []
+        s_box: list[Box] = []
+        s_boxes: list[Box] = []
+        for i in strokes:
+            st = shapes[i]
+            pts = st.points
+            r = st.r
+            s_boxes.append(st.bbox())
+            lead = True
+            c = 0
+            for (ax, ay), (bx, by) in zip(pts, pts[1:]):
+                ex, ey = bx - ax, by - ay
+                ee = ex * ex + ey * ey
+                if ee == 0:
+                    continue
+                s_kind.append(_SEG)
+                s_items.append((ax, ay, ex, ey, ee, r, 1.0 if lead else 0.0,
+                                pts[0][0], pts[0][1]))
+                s_box.append((min(ax, bx) - r, max(ax, bx) + r,
+                              min(ay, by) - r, max(ay, by) + r))
+                lead = False
+                c += 1
+            if lead:                        # no segment: a disc at the first point
+                s_kind.append(_DISC)
+                s_items.append((pts[0][0], pts[0][1], r, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0))
+                s_box.append(s_boxes[-1])
+                c = 1
+            count[i] = c
+        stroke = np.array(strokes, dtype=np.int64)
+        if stroke.size:
+            boxes[stroke] = np.array(s_boxes, dtype=float).reshape(-1, 4)
+        first = np.cumsum(count) - count
+        total = int(count.sum())
+        kind = np.zeros(total, dtype=np.int64)
+        owner = np.repeat(np.arange(n, dtype=np.int64), count)
+        par = np.zeros((12, total))
+        ibox = np.zeros((total, 4))
+        for k, idx, q in one:
+            at = first[idx]
+            kind[at] = k
+            par[:q.shape[1], at] = q.T
+            ibox[at] = boxes[idx]
+        if stroke.size:
+            c = count[stroke]
+            at = (np.repeat(first[stroke], c) + np.arange(int(c.sum()))
+                  - np.repeat(np.cumsum(c) - c, c))
+            kind[at] = s_kind
+            par[:9, at] = np.array(s_items, dtype=float).reshape(-1, 9).T
+            ibox[at] = np.array(s_box, dtype=float).reshape(-1, 4)
+        return cls(n, boxes, kind, owner, par, first, count, ibox)
+
+    @classmethod
+    def _of_each(cls, shapes: Sequence[AnyShape]) -> ShapeSet:
+        """:meth:`of` for shapes of subclasses of the shape types: one at a
+        time."""
         kinds: list[int] = []
         owners: list[int] = []
         pars: list[tuple[float, ...]] = []
@@ -333,7 +496,7 @@ class ShapeSet:
         if kind.min() == kind.max():
             return self._kind_sdf(int(kind[0]), items, x, y)
         out = np.empty(items.size)
-        for k in np.unique(kind).tolist():
+        for k in np.flatnonzero(np.bincount(kind, minlength=4)).tolist():
             sel = np.flatnonzero(kind == k)
             out[sel] = self._kind_sdf(k, items[sel], x[sel], y[sel])
         return out
@@ -397,6 +560,82 @@ class ShapeSet:
             ring[part] = np.where(t <= np.abs(sweep), ring[part], ends)
         ring -= col(5)
         return ring
+
+    def row_spans(self, items: np.ndarray, y: np.ndarray, level: float
+                  ) -> tuple[np.ndarray, np.ndarray]:
+        """Where each item's term of the signed distance is at most
+        ``level`` on the line of ordinate ``y`` (one line per item), in
+        exact arithmetic: two x intervals per item, ``lo[k]`` to ``hi[k]``
+        for k = 0, 1 (empty where lo > hi; they may overlap), computed
+        analytically: a disc, a rounded rectangle and a segment's capsule
+        meet a line in one interval, an annulus in two.  An arc that is
+        not a full circle gives the intervals of its full annulus (the arc
+        lies within it: a point near an end of the arc is as near the
+        circle).  The ends carry rounding errors of about 1e-16 of the
+        coordinates, far below the margin :meth:`Plan.cover` allows."""
+        n = items.size
+        lo = np.full((2, n), np.inf)
+        hi = np.full((2, n), -np.inf)
+        kind = self.kind[items]
+        for k in np.flatnonzero(np.bincount(kind, minlength=4)).tolist():
+            sel = np.flatnonzero(kind == k) if kind.min() != kind.max() else slice(None)
+            it = items[sel]
+            yy = y[sel]
+
+            def col(c: int) -> np.ndarray:
+                return self.cols[c][it]
+
+            if k == _DISC:
+                r = col(2) + level
+                dy = yy - col(1)
+                h2 = r * r - dy * dy
+                ok = (r >= 0) & (h2 >= 0)
+                h = np.sqrt(np.where(ok, h2, 0.0))
+                cx = col(0)
+                lo[0, sel] = np.where(ok, cx - h, np.inf)
+                hi[0, sel] = np.where(ok, cx + h, -np.inf)
+            elif k == _RECT:
+                r = col(4) + level
+                qy = np.abs(yy - col(1)) - col(3)
+                a = col(2)
+                pos = r >= 0
+                bulge = np.sqrt(np.maximum(r * r - qy * qy, 0.0))
+                half = np.where(pos, a + np.where(qy <= 0, r, bulge), a + r)
+                ok = (qy <= r) & (half >= 0)
+                cx = col(0)
+                lo[0, sel] = np.where(ok, cx - half, np.inf)
+                hi[0, sel] = np.where(ok, cx + half, -np.inf)
+            elif k == _SEG:
+                ax, ay, ex, ey = col(0), col(1), col(2), col(3)
+                r = col(5) + level
+                axis = (ex == 0) | (ey == 0)
+                if axis.all():
+                    s_lo, s_hi = _upright_spans(ax, ay, ex, ey, r, yy)
+                else:
+                    s_lo, s_hi = _capsule_spans(ax, ay, ex, ey, col(4), r, yy)
+                    if axis.any():
+                        u = np.flatnonzero(axis)
+                        s_lo[u], s_hi[u] = _upright_spans(ax[u], ay[u], ex[u], ey[u], r[u], yy[u])
+                neg = r < 0
+                lo[0, sel] = np.where(neg, np.inf, s_lo)
+                hi[0, sel] = np.where(neg, -np.inf, s_hi)
+            else:
+                w = col(5) + level
+                rad = col(2)
+                dy = yy - col(1)
+                ro = rad + w
+                ri = rad - w
+                o2 = ro * ro - dy * dy
+                i2 = ri * ri - dy * dy
+                ok = (w >= 0) & (o2 >= 0)
+                o = np.sqrt(np.where(ok, o2, 0.0))
+                i = np.sqrt(np.where((ri > 0) & (i2 > 0), i2, 0.0))
+                cx = col(0)
+                lo[0, sel] = np.where(ok, cx - o, np.inf)
+                hi[0, sel] = np.where(ok, cx - i, -np.inf)
+                lo[1, sel] = np.where(ok, cx + i, np.inf)
+                hi[1, sel] = np.where(ok, cx + o, -np.inf)
+        return lo, hi
 
     def nearest(self, x: np.ndarray, y: np.ndarray, upto: int | None = None
                 ) -> tuple[np.ndarray, np.ndarray]:
@@ -612,20 +851,26 @@ class Plan:
         return ((np.minimum(g.nx, (ti + 1) * TILE) - ti * TILE)
                 * (np.minimum(g.ny, (tj + 1) * TILE) - tj * TILE))
 
+    def _entries(self, batch: np.ndarray, ideal: bool) -> tuple[np.ndarray, np.ndarray]:
+        """The (tile, item) entries of a batch of tiles with a non-empty
+        window, ideal or drawn: (entry indices, slot of each entry's tile
+        in the batch)."""
+        es = self._entry_start
+        lo, hi = es[self.start[batch]], es[self.start[batch + 1]]
+        n = hi - lo
+        ents = (np.arange(int(n.sum())) - np.repeat(np.cumsum(n) - n - lo, n)).astype(np.int64)
+        slot = np.repeat(np.arange(batch.size), n)
+        own = self.set.owner[self._item[ents]]
+        keep = ((own < self.n_ideal) if ideal else (own >= self.n_ideal)) & (self._cost[ents] > 0)
+        return ents[keep], slot[keep]
+
     def pairs(self, batch: np.ndarray, ideal: bool, owners: bool = False
               ) -> Iterator[tuple[np.ndarray, np.ndarray | None, np.ndarray]]:
         """The (pixel, shape) pairs of a batch of tiles, ideal or drawn
         shapes, in chunks of about :data:`PAIRS`: (flat pixel index into
         a (len(batch), TILE, TILE) array, shape index (if ``owners``, else
         None), signed distance)."""
-        es = self._entry_start
-        lo, hi = es[self.start[batch]], es[self.start[batch + 1]]
-        ents = np.concatenate([np.arange(a, b) for a, b in zip(lo.tolist(), hi.tolist())]) \
-            if batch.size else np.zeros(0, dtype=np.int64)
-        slot = np.repeat(np.arange(batch.size), hi - lo)
-        own = self.set.owner[self._item[ents]]
-        keep = ((own < self.n_ideal) if ideal else (own >= self.n_ideal)) & (self._cost[ents] > 0)
-        ents, slot = ents[keep], slot[keep]
+        ents, slot = self._entries(batch, ideal)
         if not ents.size:
             return
         kind = self.set.kind[self._item[ents]]
@@ -660,20 +905,99 @@ class Plan:
             pix += li
             yield pix, (self.set.owner[items] if owners else None), d
 
+    def cover(self, batch: np.ndarray, ideal: bool, level: float) -> np.ndarray:
+        """Booleans of a batch, flat (len(batch) * TILE * TILE): where some
+        ideal (or drawn) shape's signed distance is at most ``level``,
+        exactly as evaluating every (pixel, shape) pair of :meth:`pairs`
+        would find, at the cost of the rows, not the pixels, of each shape.
+
+        Each item meets each pixel row of its window in at most two
+        intervals (:meth:`ShapeSet.row_spans`).  Those of the level lowered
+        by :data:`SPAN_MARGIN` hold only pixels whose distance, evaluated,
+        is surely at most ``level`` (the rounding of both is far smaller
+        than the margin); those of the level raised by it hold every pixel
+        whose distance surely is.  The first are filled whole, the
+        pixels between the two are evaluated with :meth:`ShapeSet.item_sdf`
+        as :meth:`pairs` does: the pixels on or near an outline, such as
+        the centres that lie exactly on it.  An arc that is not a full
+        circle has all its annulus's pixels evaluated."""
+        size = batch.size * TILE * TILE
+        ents, slot = self._entries(batch, ideal)
+        out = np.zeros(size, dtype=bool)
+        if not ents.size:
+            return out
+        win = self._win[ents]
+        rows = win[:, 1] - win[:, 0]
+        bounds = np.flatnonzero(np.diff(np.cumsum(rows) // SPAN_ROWS)) + 1
+        p = self.pitch
+        for e_idx in np.split(np.arange(ents.size), bounds):
+            if not e_idx.size:
+                continue
+            e, sl = ents[e_idx], slot[e_idx]
+            j0, _, i0, i1 = win[e_idx].T
+            cnt = rows[e_idx]
+            rep = np.repeat(np.arange(e.size), cnt)
+            lj = np.arange(rep.size) - np.repeat(np.cumsum(cnt) - cnt, cnt) + j0[rep]
+            items = self._item[e][rep]
+            y = (lj + 0.5) * p
+            y += self._ty0[e][rep]
+            tx0 = self._tx0[e][rep]
+            first, last = i0[rep], i1[rep] - 1
+            partial = (self.set.kind[items] == _ARC) & (self.set.cols[6][items] == 0)
+
+            def pixels(lo: np.ndarray, hi: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+                # pixel columns whose centres lie in [lo, hi], clipped to the window
+                a = np.ceil(np.clip((lo - tx0) / p - 0.5, -1.0, TILE + 1.0))
+                b = np.floor(np.clip((hi - tx0) / p - 0.5, -2.0, TILE + 1.0))
+                return (np.maximum(a.astype(np.int64), first),
+                        np.minimum(b.astype(np.int64), last))
+
+            s_lo, s_hi = self.set.row_spans(items, y, level - SPAN_MARGIN)
+            c_lo, c_hi = self.set.row_spans(items, y, level + SPAN_MARGIN)
+            base = (sl[rep] * TILE + lj) * TILE
+            amb_row: list[np.ndarray] = []
+            amb_a: list[np.ndarray] = []
+            amb_b: list[np.ndarray] = []
+            for k in range(2):
+                sa, sb = pixels(s_lo[k], s_hi[k])
+                ca, cb = pixels(c_lo[k], c_hi[k])
+                sure = (sa <= sb) & ~partial
+                _paint(out, base[sure] + sa[sure], sb[sure] - sa[sure] + 1)
+                # the pixels between: all of the wide interval where the
+                # narrow one is empty, else its two ends
+                whole = ~sure & (ca <= cb)
+                left = sure & (ca < sa)
+                right = sure & (sb < cb)
+                amb_row += [np.flatnonzero(whole), np.flatnonzero(left), np.flatnonzero(right)]
+                amb_a += [ca[whole], ca[left], sb[right] + 1]
+                amb_b += [cb[whole], sa[left] - 1, cb[right]]
+            r_ = np.concatenate(amb_row)
+            if not r_.size:
+                continue
+            a_, b_ = np.concatenate(amb_a), np.concatenate(amb_b)
+            n = b_ - a_ + 1
+            ends = np.cumsum(n)
+            cuts = np.searchsorted(ends, np.arange(PAIRS, int(ends[-1]), PAIRS), side="right")
+            for rr, aa, nn in zip(np.split(r_, cuts), np.split(a_, cuts), np.split(n, cuts)):
+                if not rr.size:
+                    continue
+                at = np.repeat(rr, nn)
+                li = np.arange(at.size) - np.repeat(np.cumsum(nn) - nn, nn) + np.repeat(aa, nn)
+                x = (li + 0.5) * p
+                x += tx0[at]
+                d = self.set.item_sdf(items[at], x, y[at])
+                hit = d <= level
+                out[base[at[hit]] + li[hit]] = True
+        return out
+
     def flags(self, batch: np.ndarray, tol: float
               ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         """Booleans of a batch, (len(batch), TILE, TILE): drawn (a drawn
         shape at distance <= 0), inside the ideal shrunk by ``tol``, inside
         the ideal grown by ``tol``."""
-        size = batch.size * TILE * TILE
-        on = np.zeros(size, dtype=bool)
-        inner = np.zeros(size, dtype=bool)
-        near = np.zeros(size, dtype=bool)
-        for pix, _, d in self.pairs(batch, False):
-            on[pix[d <= 0]] = True
-        for pix, _, d in self.pairs(batch, True):
-            inner[pix[d <= -tol]] = True
-            near[pix[d <= tol]] = True
+        on = self.cover(batch, False, 0.0)
+        inner = self.cover(batch, True, -tol)
+        near = self.cover(batch, True, tol)
         shape = (batch.size, TILE, TILE)
         return on.reshape(shape), inner.reshape(shape), near.reshape(shape)
 
@@ -694,6 +1018,23 @@ class Plan:
         which[which == np.iinfo(np.int64).max] = -1
         shape = (batch.size, TILE, TILE)
         return best.reshape(shape), which.reshape(shape)
+
+
+def _paint(out: np.ndarray, start: np.ndarray, length: np.ndarray) -> None:
+    """Set ``out[start[k]:start[k] + length[k]]`` for every k (lengths > 0),
+    at most :data:`PAINT` pixels at a time."""
+    if not start.size:
+        return
+    ends = np.cumsum(length)
+    cuts = np.searchsorted(ends, np.arange(PAINT, int(ends[-1]), PAINT), side="right")
+    for st, ln in zip(np.split(start, cuts), np.split(length, cuts)):
+        if not st.size:
+            continue
+        ln = ln.astype(np.int32)
+        first = np.cumsum(ln) - ln
+        idx = np.arange(int(first[-1] + ln[-1]), dtype=np.int32)
+        idx += np.repeat((st - first).astype(np.int32), ln)
+        out[idx] = True
 
 
 def clip_tiles(grid: Grid, clip: Box | None) -> tuple[int, int, int, int] | None:
@@ -775,13 +1116,15 @@ def compare(run: Run, tool: float, layer: Layer | Sequence[AnyShape], tol: float
     done = 0
     for batch in pl.batches():
         on, inner, near = pl.flags(batch, tol)
-        holes = inner & ~on
-        excess = on & ~near
+        holes = inner > on                  # inner and not drawn
+        excess = on > near                  # drawn and not near
         counted += int(pl.tile_pixels(batch).sum())
-        n_drawn += int(on.sum())
-        n_holes += int(holes.sum())
-        n_excess += int(excess.sum())
-        differ += batch[(holes | excess).any(axis=(1, 2))].tolist()
+        n_drawn += int(np.count_nonzero(on))
+        h, e = int(np.count_nonzero(holes)), int(np.count_nonzero(excess))
+        n_holes += h
+        n_excess += e
+        if h or e:
+            differ += batch[(holes | excess).any(axis=(1, 2))].tolist()
         done += batch.size
         if progress is not None:
             progress(done, pl.keys.size)

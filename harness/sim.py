@@ -154,10 +154,10 @@ def arc_extent(cx: float, cy: float, r: float, a0: float,
                sweep: float) -> tuple[float, float, float, float]:
     """(xmin, xmax, ymin, ymax) of an arc's centre line, in its own units,
     including the axis extremes the arc passes through."""
-    pts = [(cx + r * math.cos(a0), cy + r * math.sin(a0)),
-           (cx + r * math.cos(a0 + sweep), cy + r * math.sin(a0 + sweep))]
     if abs(sweep) >= TWO_PI - 1e-12:
         return cx - r, cx + r, cy - r, cy + r
+    pts = [(cx + r * math.cos(a0), cy + r * math.sin(a0)),
+           (cx + r * math.cos(a0 + sweep), cy + r * math.sin(a0 + sweep))]
     lo, hi = (a0, a0 + sweep) if sweep >= 0 else (a0 + sweep, a0)
     for q in range(math.floor(lo / (math.pi / 2)), math.ceil(hi / (math.pi / 2)) + 1):
         ang = q * math.pi / 2

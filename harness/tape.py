@@ -17,8 +17,9 @@ first error met, so a row's parity is checked wherever the row stands.
 from __future__ import annotations
 
 import math
+import re
 from collections.abc import Iterable, Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 # ---------------------------------------------------------------------------
 # Table I.  Column "8" (octal) and column "8 code with control".
@@ -93,11 +94,14 @@ class Frame:
 
 @dataclass
 class Tape:
-    """A decoded tape: the code variant, its frames, its length in rows."""
+    """A decoded tape: the code variant, its frames, its length in rows;
+    ``starts``: the 1-based row of each frame's first row, when the
+    decoder noted them (None otherwise)."""
 
     code: str
     frames: list[Frame]
     rows: int
+    starts: list[int] | None = field(default=None, compare=False, repr=False)
 
 
 # ---------------------------------------------------------------------------
@@ -427,6 +431,72 @@ def _read_frame(rd: _Reader, first: _Row) -> tuple[Frame, dict[str, int]]:
     return frame, rows
 
 
+#: A row as one character, per code: a digit, X, Y, D (DX), E (DY), C
+#: (CYC), - (minus), K, ; (KK), G (GM); ? for a row that is neither.
+_CHARS: dict[str, bytes] = {}
+for _code, _digits in (("8", DIGITS_8), ("K", DIGITS_K)):
+    _table = bytearray(b"?" * 256)
+    for _d, _v in enumerate(_digits):
+        _table[_v] = ord(str(_d))
+    for _v, _c in ((MINUS, "-"), (X, "X"), (Y, "Y"), (DX, "D"), (DY, "E"), (CYC, "C"),
+                   (K, "K"), (KK, ";"), (GM, "G")):
+        _table[_v] = ord(_c)
+    _CHARS[_code] = bytes(_table)
+#: One well-formed frame in those characters: the fields in their order,
+#: no zero value, no leading zero, no minus on CYC, K and two digits, KK.
+_FRAME = re.compile(rb"(?:X(-?[1-9][0-9]*))?(?:Y(-?[1-9][0-9]*))?(?:D(-?[1-9][0-9]*))?"
+                    rb"(?:E(-?[1-9][0-9]*))?(?:C([1-9][0-9]*))?K([0-9][0-9]);")
+
+
+def _decode_whole(data: bytes, code: str) -> Tape | None:
+    """The decoded tape when ``data`` is a tape without fault in ``code``,
+    else None (then :func:`decode` reads it row by row and names the first
+    fault).  The whole tape at once, a frame a regular-expression match:
+    the same frames as the row-by-row reader, many times faster.  Anything
+    this does not accept as plainly well formed is left to that reader."""
+    text = data.translate(_CHARS[code])
+    open_gm = text.find(b"G")
+    close_gm = text.rfind(b"G")
+    if open_gm < 0 or close_gm == open_gm:
+        return None
+    if text.count(b"0", 0, open_gm) != open_gm or \
+            text.count(b"0", close_gm + 1) != len(text) - close_gm - 1:
+        return None
+    first_row = open_gm + 2                 # 1-based row of the first frame
+    frames: list[Frame] = []
+    starts: list[int] = []
+    pos = open_gm + 1
+    opener = False
+    match = _FRAME.match
+    commands = COMMANDS
+    while pos < close_gm:
+        m = match(text, pos, close_gm)
+        if m is None:
+            return None
+        x, y, dx, dy, cyc, k = m.groups()
+        f = Frame(int(x) if x else 0, int(y) if y else 0, int(dx) if dx else 0,
+                  int(dy) if dy else 0, int(cyc) if cyc else 0, int(k))
+        if f.k not in commands or (cyc and f.cyc < 2):
+            return None
+        if f.k in (11, 13):
+            if frame_problems(f):
+                return None
+        elif x or y:
+            return None
+        if opener:
+            if cyc:
+                return None
+            opener = False
+        elif cyc:
+            opener = True
+        starts.append(pos - open_gm - 1 + first_row)
+        frames.append(f)
+        pos = m.end()
+    if opener:
+        return None
+    return Tape(code=code, frames=frames, rows=len(data), starts=starts)
+
+
 def decode(data: bytes, code: str = "auto") -> Tape:
     """Decode a tape image; ``code`` is "8", "K" or "auto".
 
@@ -442,6 +512,9 @@ def decode(data: bytes, code: str = "auto") -> Tape:
     evidence: int | None = None
     if code == "auto":
         code, evidence = _scan_code(data)
+    fast = _decode_whole(data, code)
+    if fast is not None:
+        return fast
     rd = _Reader(data, code, evidence)
 
     # Leader: blank rows up to the opening GM.

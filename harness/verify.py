@@ -204,7 +204,10 @@ def frame_start_rows(data: bytes, tape: Tape) -> list[int]:
     """The 1-based row of the first row of each frame of a decoded tape.
 
     Valid because the decoder is strict (no leading zeros, no zero values,
-    fixed order): a decoded frame has exactly one punching."""
+    fixed order): a decoded frame has exactly one punching.  The rows the
+    decoder noted, when it did."""
+    if tape.starts is not None:
+        return list(tape.starts)
     lead = next((i for i, v in enumerate(data) if v != 0), 0)
     row = lead + 2                          # leader rows, then GM
     out = []

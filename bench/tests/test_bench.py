@@ -126,3 +126,15 @@ def test_tenzor_tour_is_within_five_percent_of_lkh(dist, run_tenzor):
         length["ref"] += tours.tour_length(items, ref)
     assert length["tenzor"] <= 1.05 * length["ref"], length
     assert length["tenzor"] < length["nn"], length
+
+
+def test_verify_is_timed_only_on_the_boards_chosen(quick_run, tenzor_exe, tmp_path):
+    assert all(r["verify_s"] == "" for r in report.read_csv(quick_run / "bench.csv"))
+    status = bench_main.main(["--sizes", "100", "--dists", "uniform", "--verify-min", "100",
+                              "--repeats", "1", "--min-seconds", "0", "--lkh-max", "0",
+                              "--tenzor", str(tenzor_exe), "--out", str(tmp_path)])
+    assert status == 0
+    (row,) = report.read_csv(tmp_path / "bench.csv")
+    assert 0 < float(row["verify_cpu_s"]) and 0 < float(row["verify_s"])
+    assert 10 < float(row["verify_rss_mb"]) < 2048
+    assert "verify s" in (tmp_path / "bench.txt").read_text(encoding="ascii")

@@ -169,3 +169,56 @@ def test_shapes_signed_distance() -> None:
     grid = Grid(0, 0, 2.0, 3, 2)
     xs, ys = grid.centres()
     assert xs[0].tolist() == [1.0, 3.0, 5.0] and ys[:, 0].tolist() == [1.0, 3.0]
+
+
+def _random_shapes(rng: np.random.Generator, integer: bool) -> list:
+    """A dozen random shapes of every kind: discs, rounded rectangles,
+    polylines (upright and slanted, some with repeated points), full and
+    partial arcs, on whole units or anywhere."""
+    def v(a: float, b: float) -> float:
+        x = float(rng.uniform(a, b))
+        return float(round(x)) if integer else x
+
+    shapes: list = []
+    for _ in range(int(rng.integers(1, 14))):
+        k = int(rng.integers(0, 4))
+        if k == 0:
+            shapes.append(Disc(v(0, 1500), v(0, 1500), v(0, 150)))
+        elif k == 1:
+            w, h = v(2, 300), v(2, 300)
+            shapes.append(RoundRect(v(0, 1500), v(0, 1500), w, h,
+                                    min(w, h) / 2 * float(rng.uniform(0, 1))))
+        elif k == 2:
+            pts = tuple((v(0, 1500), v(0, 1500)) for _ in range(int(rng.integers(1, 5))))
+            if len(pts) > 1 and rng.uniform() < 0.5:
+                pts = (pts[0], (pts[0][0], pts[1][1]), pts[1], pts[1])
+            shapes.append(Stroke(pts, v(1, 60)))
+        else:
+            sweep = float(rng.choice([2 * math.pi, -2 * math.pi, rng.uniform(-6, 6)]))
+            shapes.append(ArcBand(v(0, 1500), v(0, 1500), v(0, 500),
+                                  float(rng.uniform(-4, 4)), sweep, v(1, 60)))
+    return shapes
+
+
+@pytest.mark.parametrize("seed", range(24))
+def test_span_fill_is_the_pairwise_evaluation(seed: int) -> None:
+    """The boolean pass paints each shape's spans per pixel row; it must
+    find exactly the pixels that evaluating every (pixel, shape) pair finds
+    (Plan.distances), on pixel centres that fall exactly on outlines
+    (whole units) and anywhere else."""
+    from harness.raster import plan
+    rng = np.random.default_rng(seed)
+    shapes = _random_shapes(rng, integer=seed % 2 == 0)
+    n_ideal = int(rng.integers(0, len(shapes) + 1))
+    tol = float(rng.integers(2, 40))
+    pitch = min(float(rng.choice([1.0, 2.0, 3.0, 4.0])), tol / 2)
+    pl = plan(shapes[:n_ideal], shapes[n_ideal:], tol, pitch=pitch,
+              reach=float(rng.choice([0.0, 50.0])))
+    assert pl is not None
+    for batch in pl.batches(None, 16):
+        on, inner, near = pl.flags(batch, tol)
+        ideal_d, _ = pl.distances(batch, True)
+        drawn_d, _ = pl.distances(batch, False)
+        assert np.array_equal(on, drawn_d <= 0)
+        assert np.array_equal(inner, ideal_d <= -tol)
+        assert np.array_equal(near, ideal_d <= tol)

@@ -507,3 +507,49 @@ def test_cli_usage_errors(tmp_path, capsys) -> None:  # type: ignore[no-untyped-
     assert main(["decode", "x.ptp", "--code", "9"]) == 2
     assert main(["decode", str(tmp_path / "missing.ptp")]) == 2
     assert "missing.ptp" in capsys.readouterr().err
+
+
+def _row_by_row(data: bytes, mode: str) -> Tape | TapeError:
+    """decode() with the whole-tape decoder switched off: the row reader."""
+    import harness.tape as tape_module
+    whole = tape_module._decode_whole
+    tape_module._decode_whole = lambda data, code: None
+    try:
+        return decode(data, mode)
+    except TapeError as exc:
+        return exc
+    finally:
+        tape_module._decode_whole = whole
+
+
+@given(frames=frame_lists(max_items=6), code=codes, data=st.data())
+@settings(max_examples=200)
+def test_whole_tape_decoder_is_the_row_reader(frames: list[Frame], code: str,
+                                              data: st.DataObject) -> None:
+    """A tape decoded whole gives the frames, code, rows and frame starts
+    the row-by-row reader gives; a tape with a fault in any row is left to
+    that reader, so decode() raises its error."""
+    good = encode(frames, code, leader=data.draw(st.integers(0, 3), label="leader"))
+    bad = bytearray(good)
+    corrupt = data.draw(st.booleans(), label="corrupt")
+    if corrupt:
+        index = data.draw(st.integers(0, len(bad) - 1), label="index")
+        bad[index] = data.draw(st.integers(0, 255), label="value")
+    for mode in (code, "auto"):
+        slow = _row_by_row(bytes(bad), mode)
+        try:
+            fast: Tape | TapeError = decode(bytes(bad), mode)
+        except TapeError as exc:
+            fast = exc
+        if isinstance(slow, TapeError):
+            assert isinstance(fast, TapeError) and str(fast) == str(slow)
+        else:
+            assert isinstance(fast, Tape)
+            assert (fast.code, fast.frames, fast.rows) == (slow.code, slow.frames, slow.rows)
+            assert fast.starts is not None or corrupt      # every good tape is read whole
+            if fast.starts is not None:
+                from harness.tape import frame_rows
+                row = next(i for i, v in enumerate(bad) if v != 0) + 2
+                for start, f in zip(fast.starts, fast.frames):
+                    assert start == row
+                    row += len(frame_rows(f, fast.code))
