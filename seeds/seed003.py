@@ -402,6 +402,10 @@ def deck_polylines(text: str) -> list[list[Point]]:
 
 
 def _run_cnclink(args: argparse.Namespace) -> int:
+    if args.resend < 0:
+        print(f"cnclink: --resend {args.resend}: a block can be sent again 0 or more times",
+              file=sys.stderr)
+        return 2
     try:
         text = sys.stdin.read() if args.input == "-" else open(args.input, encoding="ascii").read()
         pls = deck_polylines(text) if args.input.endswith(".crd") else read_polylines(text)
@@ -418,7 +422,12 @@ def _run_cnclink(args: argparse.Namespace) -> int:
         except OSError as exc:
             print(f"cnclink: {args.output}: {exc.strerror or exc}", file=sys.stderr)
             return 2
-    corrupt_at = [int(v) for v in args.corrupt.split(",") if v] if args.corrupt else []
+    try:
+        corrupt_at = [int(v) for v in args.corrupt.split(",") if v] if args.corrupt else []
+    except ValueError:
+        print(f"cnclink: --corrupt {args.corrupt!r}: expected N[,N...], whole numbers",
+              file=sys.stderr)
+        return 2
     result = send(data, corrupt_at, args.resend)
     for line in result.log:
         print(line)

@@ -102,10 +102,12 @@ MUTATIONS = ("cut", "shift", "unshift", "shift-all", "delete", "duplicate", "swa
              "field", "byte", "byte", "crlf", "cr-only", "long", "nul", "truncate", "blank")
 
 
-def mutated_body(r: random.Random) -> list[str]:
-    """A valid package broken by 1-4 mutations (as strategies.st_mutated_deck,
-    within one package)."""
-    lines = _valid_body(r) or [""]
+def mutated_body(r: random.Random, lines: list[str] | None = None) -> list[str]:
+    """A valid package (``lines``, else one of the examples' or a random
+    board) broken by 1-4 mutations (as strategies.st_mutated_deck, within
+    one package)."""
+    lines = list(lines) if lines is not None else _valid_body(r)
+    lines = lines or [""]
     for _ in range(r.choice([1, 1, 1, 2, 3, 4])):
         what = r.choice(MUTATIONS)
         if not lines:
