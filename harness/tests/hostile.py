@@ -31,6 +31,11 @@ GOAL = 10_000
 #: Every program (or input format) the batch suites must reach in a whole run.
 PROGRAMS = ("tenzor", "em703", "dxf2deck", "profile", "equidistant", "punch5121",
             "cnclink", "seeds split", "dda", "harness decode", "harness verify")
+#: The batch suites, which between them reach every program of PROGRAMS.
+SUITES = ("harness/tests/tenzor/test_fuzz_tenzor_batch.py",
+          "harness/tests/em703/test_fuzz_em703_batch.py",
+          "harness/tests/oracle/test_fuzz_harness_batch.py",
+          "seeds/tests/test_fuzz_seeds_batch.py")
 #: program -> hostile inputs given in this run (filled by :func:`count`).
 COUNTS: Counter[str] = Counter()
 
