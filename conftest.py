@@ -74,6 +74,7 @@ def pytest_collection_modifyitems(config, items) -> None:
     """Mark every test that runs TENZOR with ``tenzor``, every test that runs
     em703 with ``em703`` (CI's pass against the build with run-time checks
     selects them)."""
+    _hostile_total_last(items)
     for item in items:
         names = getattr(item, "fixturenames", ())
         if "tenzor_exe" in names:
@@ -129,3 +130,24 @@ def example_tapes(examples: list[Example]) -> list[Path]:
 def example_jobs(examples: list[Example]) -> list[Path]:
     """Every job sheet TENZOR writes for the decks of examples/."""
     return [j for e in examples for j in e.jobs]
+
+
+def _hostile_total_last(items) -> None:
+    """harness/tests/test_hostile_total.py checks the whole run's count of
+    hostile inputs: it must run after every batch suite."""
+    last = [i for i in items if i.nodeid.endswith("test_hostile_total.py::test_a_ci_run_makes_"
+                                                  "at_least_10000_hostile_inputs")]
+    for item in last:
+        items.remove(item)
+        items.append(item)
+
+
+def pytest_terminal_summary(terminalreporter, exitstatus, config) -> None:
+    """The hostile inputs the batch fuzz suites gave each program in this run
+    (harness/tests/hostile.py)."""
+    from harness.tests.hostile import COUNTS
+    if COUNTS:
+        terminalreporter.section("hostile inputs (batch fuzz suites)")
+        for program, n in sorted(COUNTS.items(), key=lambda kv: -kv[1]):
+            terminalreporter.write_line(f"{program:16s} {n:6d}")
+        terminalreporter.write_line(f"{'total':16s} {sum(COUNTS.values()):6d}")

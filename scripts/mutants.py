@@ -6,7 +6,8 @@ comparison off by one, a constant slightly wrong, a rule's limit moved. For
 each, the file is changed in place, the programs are rebuilt (fpm rebuilds
 only what changed), and the tests that run TENZOR and em703 (`pytest -m
 "tenzor or em703" -x`) and the Fortran unit tests run against them; the
-mutant is killed when any test fails. The file is always restored, also when
+mutant is killed when any test fails, and the table names the first test
+that failed (pytest's ``FAILED path::test`` line). The file is always restored, also when
 the run is interrupted; the script refuses to start on a tree whose legacy/
 or src/ has uncommitted changes. It prints a table and the score; the table
 is kept in docs/ROBUSTNESS.md.
@@ -16,6 +17,7 @@ is marked so in the list, with the reason; the score counts the others.
 """
 from __future__ import annotations
 
+import re
 import subprocess
 import sys
 import time
@@ -105,13 +107,30 @@ MUTANTS = [
            "card reader keeps the CR of a CRLF deck"),
 ]
 
-TESTS = ["python", "-m", "pytest", "-q", "-x", "-p", "no:cacheprovider", "-m",
+TESTS = ["python", "-m", "pytest", "-q", "-x", "--tb=no", "-rf", "-p", "no:cacheprovider", "-m",
          "tenzor or em703"]
 
 
 def _run(cmd: list[str], timeout: int = 1800) -> bool:
+    return _output(cmd, timeout)[0]
+
+
+def _output(cmd: list[str], timeout: int = 1800) -> tuple[bool, str]:
     proc = subprocess.run(cmd, cwd=ROOT, capture_output=True, text=True, timeout=timeout)
-    return proc.returncode == 0
+    return proc.returncode == 0, proc.stdout + proc.stderr
+
+
+def first_failure(output: str, runner: str) -> str:
+    """The first failing test named in pytest's or fpm test's output
+    (``FAILED path::test`` of ``-x -q``; fpm test's ``FAIL name`` or
+    ``ERROR STOP`` line), else the runner's name alone."""
+    m = re.search(r"^(?:FAILED|ERROR) (\S+::.+?)(?: - .*)?$", output, re.M)
+    if m:
+        return f"{runner}: `{m.group(1)}`"
+    m = re.search(r"^.*\b(?:FAIL|ERROR STOP)\b.*$", output, re.M)
+    if m and runner == "fpm test":
+        return f"{runner}: {m.group(0).strip()[:100]}"
+    return runner
 
 
 def killed(m: Mutant) -> tuple[bool, str]:
@@ -124,10 +143,12 @@ def killed(m: Mutant) -> tuple[bool, str]:
         path.write_text(text.replace(m.old, m.new))
         if not _run(["fpm", "build"]):
             return True, "the build"
-        if not _run(["fpm", "test"]):
-            return True, "fpm test"
-        if not _run(TESTS):
-            return True, "pytest"
+        ok, out = _output(["fpm", "test"])
+        if not ok:
+            return True, first_failure(out, "fpm test")
+        ok, out = _output(TESTS)
+        if not ok:
+            return True, first_failure(out, "pytest")
         return False, "survived"
     finally:
         path.write_text(text)

@@ -154,7 +154,13 @@ def _u(v: float) -> int:
 
 
 def _where(e: Any) -> str:
-    return f"{e.dxftype()} #{e.dxf.handle} on layer {e.dxf.layer}"
+    """The entity's type, handle and layer, for a problem line; never raises
+    (some entity types have no layer attribute, a malformed one no handle)."""
+    try:
+        handle, layer = e.dxf.get("handle", "?"), e.dxf.get("layer", "?")
+    except (AttributeError, ezdxf.DXFError):
+        handle = layer = "?"
+    return f"{e.dxftype()} #{handle} on layer {layer}"
 
 
 def _layer_width(layer: str) -> int | None:
@@ -511,6 +517,12 @@ def _run(args: argparse.Namespace) -> int:
         return 2
     except ezdxf.DXFError as exc:
         print(f"dxf2deck: {args.drawing}: not a DXF drawing: {exc}", file=sys.stderr)
+        return 2
+    except (ValueError, TypeError, LookupError, StopIteration, EOFError) as exc:
+        # ezdxf's tag loader raises these on a malformed file (a value that
+        # is not a number, a group code without its value at the end)
+        print(f"dxf2deck: {args.drawing}: not a DXF drawing: {type(exc).__name__} "
+              f"{exc}".rstrip(), file=sys.stderr)
         return 2
     try:
         conv = convert(doc, origin)

@@ -196,7 +196,9 @@ def approximate_profile(points: Sequence[Point], tol: float) -> list[Piece]:
     j = n - 1
     while j > 0:
         entry = best[j]
-        assert entry is not None
+        if entry is None:           # only a non-finite value or tolerance gets here
+            raise ValueError(f"no line or quadratic fits points {j} to {j + 1} within "
+                             f"the tolerance {tol:g} mm")
         i, (nodes, coef, err) = entry[3], entry[4]
         pieces.append(Piece(i, j, nodes, coef, err))
         j = i
@@ -561,11 +563,22 @@ def _read_points(path: str) -> list[Point]:
         parts = line.replace(",", " ").split()
         if len(parts) != 2:
             raise ValueError(f"line {no}: expected 'x y', got {line!r}")
-        pts.append((float(parts[0]), float(parts[1])))
+        try:
+            x, y = float(parts[0]), float(parts[1])
+        except ValueError:
+            raise ValueError(f"line {no}: expected two numbers, got {line!r}") from None
+        if not (math.isfinite(x) and math.isfinite(y)):
+            raise ValueError(f"line {no}: {line!r} is not a finite point")
+        pts.append((x, y))
     return pts
 
 
 def _run_profile(args: argparse.Namespace) -> int:
+    for name, v in (("--tol", args.tol), ("--chord", args.chord)):
+        if not (math.isfinite(v) and v > 0):
+            print(f"profile: {name} {v:g}: a tolerance is a finite number of mm above 0",
+                  file=sys.stderr)
+            return 2
     try:
         if args.paper:
             sys.stdout.write(paper_report())

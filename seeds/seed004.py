@@ -52,6 +52,11 @@ from .seed002 import code_5121_weights
 #: The document's split of DX = 98132, DY = 87647 pulses at most 9999 per frame.
 DOCUMENT_MOVE: tuple[int, int] = (98132, 87647)
 DOCUMENT_MAX: int = 9999
+#: The most frames a move may be split into, and the most input pulses the
+#: interpolators may simulate: past them a hostile DX or --size would take
+#: minutes and gigabytes (a list of 10^8 frames), so the move is refused.
+MOST_FRAMES: int = 1_000_000
+MOST_PULSES: int = 1 << 21
 DOCUMENT_TABLE: tuple[tuple[int, int], ...] = (
     (9813, 8765), (9813, 8764), (9814, 8765), (9813, 8765), (9813, 8764),
     (9813, 8765), (9813, 8765), (9814, 8765), (9813, 8764), (9813, 8765))
@@ -96,6 +101,9 @@ def split_move(dx: int, dy: int, max_pulses: int = DOCUMENT_MAX) -> list[tuple[i
     n = frames_needed(dx, dy, max_pulses)
     if n == 0:
         return []
+    if n > MOST_FRAMES:
+        raise ValueError(f"the move ({dx}, {dy}) needs {n} frames of at most {max_pulses} "
+                         f"pulses, more than {MOST_FRAMES}")
     points = [(division_point(dx, k, n), division_point(dy, k, n)) for k in range(n + 1)]
     return [(x1 - x0, y1 - y0) for (x0, y0), (x1, y1) in zip(points, points[1:])]
 
@@ -380,7 +388,16 @@ def interpolate(dx: int, dy: int, method: str = "binary", size: int | None = Non
     frames = split_move(dx, dy, max_pulses) if max_pulses else [(dx, dy)]
     if size is None:
         size = counter_size(method, frames)
-    volume = {"binary": 1 << size, "master": 1 << size, "decimal": 10 ** size}.get(method, size)
+    if method != "integrator" and not 1 <= size <= 64:
+        raise ValueError(f"the counter size must be 1 to 64 (bits or decades), not {size}")
+    # (not a dict of the three: that would compute 10 ** size for an integrator's
+    # volume of 2^32, which takes minutes)
+    volume = (1 << size if method in ("binary", "master") else 10 ** size if method == "decimal"
+              else size)
+    if volume * len(frames) > MOST_PULSES:
+        raise ValueError(f"the simulation would take {volume * len(frames)} input pulses, "
+                         f"more than {MOST_PULSES}; split the move with --max or give a "
+                         f"smaller --size")
     xs, ys = [0], [0]
     pending: list[int] = []             # X pulses on their way (independent axes)
     for fx, fy in frames:

@@ -1,0 +1,267 @@
+"""The neighbouring systems' tools on hostile files, in-process, in bulk
+(docs/ROBUSTNESS.md): dxf2deck's DXF drawings, profile's points, equidistant's
+decks, punch5121's frame text and tape images, cnclink's polylines and decks,
+split's and dda's numbers.
+
+Each tool's ``main`` is called directly (no process start; ~1 ms a call for
+most), on inputs from ``random.Random(seed)`` with fixed seeds. Whatever it
+is given, a tool must return 0, 1 or 2 and raise nothing (an exception here
+is a traceback for the user); when it returns non-zero it says why on
+standard error, naming the tool (and the line, row or entity where the input
+says where); it leaves no temporary file, and an output it refuses to write
+is not there.
+"""
+from __future__ import annotations
+
+import contextlib
+import io
+import random
+import sys
+from pathlib import Path
+
+import pytest
+
+from harness.tests import hostile
+from seeds.__main__ import main
+
+ROOT = Path(__file__).resolve().parents[2]
+BOARD_DXF = (ROOT / "examples" / "dxf" / "board.dxf").read_text(encoding="ascii")
+CONTOURS = [(ROOT / "examples" / n).read_text(encoding="ascii")
+            for n in ("flange.crd", "flange-path.crd", "blade-profile.crd",
+                      "report/saw-polyline.crd", "demo.crd")]
+NUMS = ["0", "-0", "1", "-1", "0.5", "nan", "inf", "-inf", "1e308", "-1e308", "1e-320",
+        "1e12", "-1e12", "99999", "2147483648", "x", "", "1,5", "0x10", "1_000"]
+
+
+def call(argv: list[str], here: Path, where: str) -> tuple[int, str]:
+    """main(argv) in ``here``'s files: (status, standard error), after every
+    promise of the module doc."""
+    before = {p.name for p in here.iterdir()}
+    out, err = io.StringIO(), io.StringIO()
+    stdin, sys.stdin = sys.stdin, io.StringIO("")
+    try:
+        with contextlib.redirect_stdout(out), contextlib.redirect_stderr(err):
+            status = main(argv)
+    except BaseException as exc:                   # noqa: BLE001: any escape is the failure
+        raise AssertionError(f"{where}: {argv} raised {type(exc).__name__}: {exc}") from exc
+    finally:
+        sys.stdin = stdin
+    text = err.getvalue()
+    assert status in (0, 1, 2), f"{where}: {argv} returned {status!r}"
+    if status:
+        assert text.strip(), f"{where}: {argv} returned {status} without a message"
+        # (cnclink's refused transfer ends with the paper's own message)
+        assert text.startswith((f"{argv[0]}: ", "usage:")) or "ошибка вывода" in text, \
+            f"{where}: {argv}: the message does not name the tool: {text[:300]!r}"
+    new = {p.name for p in here.iterdir()} - before
+    assert not [n for n in new if n.endswith(".tmp")], f"{where}: {argv} left {new}"
+    return status, text
+
+
+def _dxf_number(r: random.Random) -> str:
+    return r.choice(NUMS) if r.random() < 0.3 else f"{r.uniform(-300, 300):.3f}"
+
+
+def _entity(r: random.Random) -> list[str]:
+    layer = r.choice(["0", "PADS", "PAD", "RING", "COND_W0.5", "X_Wnan", "X_W-1", "X_W1e9",
+                      "TEXT", ""])
+    kind = r.choice(["CIRCLE", "LINE", "ARC", "LWPOLYLINE", "TEXT", "POINT", "INSERT",
+                     "SPLINE"])
+    tags = ["0", kind, "8", layer, "10", _dxf_number(r), "20", _dxf_number(r)]
+    if kind in ("CIRCLE", "ARC"):
+        tags += ["40", _dxf_number(r)]
+    if kind == "ARC":
+        tags += ["50", _dxf_number(r), "51", _dxf_number(r)]
+    if kind == "LINE":
+        tags += ["11", _dxf_number(r), "21", _dxf_number(r)]
+    if kind == "LWPOLYLINE":
+        n = r.randint(0, 6)
+        tags = ["0", kind, "8", layer, "90", str(n), "70", r.choice(["0", "1", "x"])]
+        if r.random() < 0.5:
+            tags += ["43", _dxf_number(r)]
+        for _ in range(n):
+            tags += ["10", _dxf_number(r), "20", _dxf_number(r)]
+            if r.random() < 0.3:
+                tags += ["42", _dxf_number(r)]
+    if kind == "TEXT":
+        tags += ["40", "1", "1", r.choice(["FIRST", "LAST", "1", "2", "3", "99", "", "0",
+                                           "-1", "\u0416"])]
+    if kind == "INSERT":
+        tags += ["2", r.choice(["NOWHERE", "*MODEL_SPACE", ""])]
+    return tags
+
+
+def hostile_dxf(r: random.Random) -> str:
+    if r.random() < 0.5:                           # entities of hostile values
+        tags = ["0", "SECTION", "2", "ENTITIES"]
+        for _ in range(r.randint(0, 12)):
+            tags += _entity(r)
+        tags += ["0", "ENDSEC", "0", "EOF"]
+        return "\n".join(tags) + "\n"
+    lines = BOARD_DXF.splitlines()                  # the example drawing, mutated
+    for _ in range(r.randint(1, 4)):
+        i = r.randrange(len(lines))
+        what = r.choice(["value", "value", "drop", "dup", "swap", "cut", "junk"])
+        if what == "value":
+            i |= 1                                  # a value line (codes are even lines)
+            if i < len(lines):
+                lines[i] = r.choice(NUMS + ["CIRCLE", "EOF", "ENDSEC", "SECTION"])
+        elif what == "drop":
+            del lines[i]
+        elif what == "dup":
+            lines.insert(i, lines[i])
+        elif what == "swap":
+            j = r.randrange(len(lines))
+            lines[i], lines[j] = lines[j], lines[i]
+        elif what == "cut":
+            del lines[i:]
+        else:
+            lines[i] = hostile.random_text(r, 20)
+        lines = lines or [""]
+    return "\n".join(lines) + "\n"
+
+
+def points_text(r: random.Random, ints: bool = False) -> str:
+    rows = []
+    x = 0.0
+    for _ in range(r.randint(0, 30)):
+        x += r.uniform(0.1, 20)
+        row = (f"{int(x)} {r.randint(-2000, 2000)}" if ints
+               else f"{x:.2f} {r.uniform(-50, 50):.3f}")
+        if r.random() < 0.15:
+            row = " ".join(r.choice(NUMS) for _ in range(r.randint(0, 3)))
+        elif r.random() < 0.05:
+            row = hostile.random_text(r, 20)
+        elif r.random() < 0.05:
+            row = ""
+        rows.append(row)
+    return "\n".join(rows) + r.choice(["\n", "", "\r\n"])
+
+
+def contour_deck(r: random.Random) -> str:
+    """An example deck of contours, whole (a fifth of the time) or with
+    one package's cards mutated."""
+    text = r.choice(CONTOURS)
+    if r.random() < 0.2:
+        return text
+    lines = text.splitlines()
+    head = [ln for ln in lines if ln[:1] in "*#"][:3]
+    data = [ln for ln in lines if ln[:1] not in "*#CE"][1:]     # less the first name card
+    body = hostile.guard(hostile.mutated_body(r, data))
+    return "\n".join(head + ["EQ"] + body + ["E"]) + "\n"
+
+
+KINDS = {"dxf2deck": 6, "profile": 3, "equidistant": 3, "punch5121": 3, "punch5121-decode": 3,
+         "cnclink": 3, "split": 2, "dda": 2}
+CHUNK = 100
+PLAN = [(kind, n) for kind, k in KINDS.items() for n in range(k)]
+PROGRAM = {"split": "seeds split", "punch5121-decode": "punch5121"}
+
+
+@pytest.mark.hostile
+@pytest.mark.parametrize("kind,n", PLAN, ids=[f"{k}-{n}" for k, n in PLAN])
+def test_hostile_files(tmp_path, kind, n):
+    seed = 3000 + 100 * list(KINDS).index(kind) + n
+    r = random.Random(seed)
+    for i in range(CHUNK):
+        here = tmp_path / f"case{i}"
+        here.mkdir()
+        where = f"seed {seed}, input {i}"
+        if kind == "dxf2deck":
+            (here / "in.dxf").write_text(hostile_dxf(r), encoding="utf-8")
+            argv = ["dxf2deck", str(here / "in.dxf"), "-o", str(here / "out.crd")]
+            if r.random() < 0.2:
+                argv += [r.choice(["--origin", "--start", "--tools", "--name"]),
+                         ",".join(r.choice(NUMS) for _ in range(r.randint(1, 3)))]
+            status, err = call(argv, here, where)
+            if status == 2:
+                assert not (here / "out.crd").exists(), f"{where}: a deck written with status 2"
+        elif kind == "profile":
+            (here / "pts.txt").write_text(points_text(r), encoding="utf-8")
+            argv = ["profile", str(here / "pts.txt"), "-o", str(here / "out.crd")]
+            if r.random() < 0.3:
+                argv += [r.choice(["--tol", "--chord"]), r.choice(NUMS[:12])]
+            call(argv, here, where)
+        elif kind == "equidistant":
+            (here / "in.crd").write_text(contour_deck(r), encoding="utf-8")
+            argv = ["equidistant", str(here / "in.crd"), "-o", str(here / "out.crd")]
+            if r.random() < 0.3:
+                argv += ["--cutter", r.choice(NUMS[:12])]
+            if r.random() < 0.3:
+                argv += ["--chords", r.choice(["0.01", "0.5", "nan", "-1", "0", "1e-6"])]
+            if r.random() < 0.3:
+                argv += ["--inside"]
+            call(argv, here, where)
+        elif kind == "punch5121":
+            text = "\n".join(" ".join(hostile.number_word(r) for _ in range(r.randint(0, 7)))
+                             for _ in range(r.randint(0, 20)))
+            (here / "f.txt").write_text(text, encoding="utf-8")
+            call(["punch5121", str(here / "f.txt"), "-o", str(here / "t.ptp")], here, where)
+        elif kind == "punch5121-decode":
+            data = hostile.random_bytes(r, 400)
+            if r.random() < 0.7:
+                data = bytes(b & 31 for b in data)
+            (here / "t.ptp").write_bytes(data)
+            call(["punch5121", "--decode", str(here / "t.ptp")], here, where)
+        elif kind == "cnclink":
+            if r.random() < 0.3:
+                name, text = "in.crd", contour_deck(r)
+            else:
+                name, text = "in.txt", points_text(r, ints=True)
+            (here / name).write_text(text, encoding="utf-8")
+            argv = ["cnclink", str(here / name)]
+            if r.random() < 0.3:
+                argv += ["--corrupt", ",".join(hostile.number_word(r) for _ in range(2))]
+            if r.random() < 0.2:
+                argv += ["--resend", r.choice(["0", "1", "3", "-1", "x"])]
+            call(argv, here, where)
+        elif kind == "split":
+            args = [hostile.number_word(r) for _ in range(r.randint(0, 3))]
+            if r.random() < 0.6:
+                args = ["--max", hostile.number_word(r)] + args
+            call(["split", *args], here, where)
+        else:
+            args = [hostile.number_word(r) for _ in range(r.randint(1, 3))]
+            if r.random() < 0.5:
+                args += ["--method", r.choice(["binary", "decimal", "integrator", "x"])]
+            if r.random() < 0.3:
+                args += ["--size", hostile.number_word(r)]
+            if r.random() < 0.3:
+                args += ["--max", hostile.number_word(r)]
+            call(["dda", *args], here, where)
+    hostile.count(PROGRAM.get(kind, kind), CHUNK)
+
+
+# ---------------------------------------------------------------------------
+# Faults the batch found, kept as their smallest inputs (docs/ROBUSTNESS.md).
+# Each was a traceback or a run of minutes; each is now a message and 1 or 2.
+# ---------------------------------------------------------------------------
+FOUND = [
+    # ezdxf's tag loader: a group code with no value at the end; a value not a number
+    ("dxf2deck", "0\nSECTION\n2\nENTITIES\n0\nLINE\n10\n", 2, "not a DXF drawing"),
+    ("dxf2deck", "0\nSECTION\n2\nENTITIES\n0\nLINE\n10\n1,5\n20\n0\n0\nENDSEC\n0\nEOF\n", 2,
+     "not a DXF drawing"),
+    # a point that is not finite: an AssertionError deep in the fit
+    ("profile", "nan 1\n2 2\n3 inf\n", 1, "line 1: 'nan 1' is not a finite point"),
+    ("profile --tol nan", "1 1\n2 2\n3 4\n", 2, "--tol nan"),
+    ("profile --chord 0", "1 1\n2 2\n3 4\n", 2, "--chord 0"),      # ZeroDivisionError
+    ("cnclink --corrupt x", "0 0\n5 5\n", 2, "--corrupt 'x'"),      # ValueError
+    ("cnclink --resend -1", "0 0\n5 5\n", 2, "--resend -1"),        # "after 0 transmissions"
+    # 99999999999 pulses: 3 million frames, 286112 blocks and a time-out
+    ("cnclink", "0 0\n99999999999 0\n", 1, "more than the machine's largest"),
+    ("split --max 1 99999999 1", None, 1, "more than 1000000"),      # two minutes, 10 GB
+    ("dda 999999999 1", None, 2, "more than 2097152"),               # 2^30 pulses
+    ("dda -1957 0 --size 99999999999999999999", None, 2, "1 to 64"),  # OverflowError
+    ("dda -1862 2147483648 --method integrator", None, 2, "more than 2097152"),  # 10 ** 2^32
+]
+
+
+@pytest.mark.parametrize("command,text,status,words", FOUND, ids=[c for c, *_ in FOUND])
+def test_found_by_the_batch(tmp_path, command, text, status, words):
+    argv = command.split()
+    if text is not None:
+        path = tmp_path / ("in.dxf" if argv[0] == "dxf2deck" else "in.txt")
+        path.write_text(text, encoding="ascii")
+        argv.insert(1, str(path))
+    got, err = call(argv, tmp_path, command)
+    assert got == status and words in err, (got, err)
