@@ -483,18 +483,30 @@ def _order(items: list[Item], labels: list[Label], problems: list[str]) -> tuple
         else:
             problems.append(f"{where}: text {lab.text!r} is not a label (FIRST, LAST, "
                             f"1, 2, ...); left out")
+    seq = sequence(len(items), first, numbered, last, problems)
+    if seq is None:
+        return items, False
+    return [items[i] for i in seq], True
+
+
+def sequence(n: int, first: list[int], numbered: dict[int, int], last: list[int],
+             problems: list[str]) -> list[int] | None:
+    """The drawing order of n items (indices) from the items FIRST, the
+    numbers and LAST are attached to (section 4 of the paper): FIRST, the
+    numbers in order (an item may carry several), the unlabelled items in
+    drawing order, LAST.  None when there is no label at all."""
     for name, got in (("FIRST", first), ("LAST", last)):
         if len(got) > 1:
             problems.append(f"{name} given {len(got)} times; the first one is used")
             del got[1:]
     if not (first or last or numbered):
-        return items, False
-    seq = first + [numbered[n] for n in sorted(numbered)]
+        return None
+    seq = first + [numbered[k] for k in sorted(numbered)]
     seen = set(seq) | set(last)
-    seq += [i for i in range(len(items)) if i not in seen] + last
+    seq += [i for i in range(n) if i not in seen] + last
     if last and last[0] in first + list(numbered.values()):
         problems.append("LAST is attached to an item that also has an earlier label")
-    return [items[i] for i in seq], True
+    return seq
 
 
 @dataclass
