@@ -126,7 +126,7 @@ class Trace:
             else:
                 _, r, t, dt = s
                 cx, cy = x - r * math.cos(math.radians(t)), y - r * math.sin(math.radians(t))
-                n = max(2, int(abs(dt) * 20))
+                n = max(2, int(abs(dt) * 4))
                 for k in range(1, n + 1):
                     a = math.radians(t + dt * k / n)
                     x, y = cx + r * math.cos(a), cy + r * math.sin(a)
@@ -157,18 +157,18 @@ def _truth(e) -> shapely.LineString:
     """An entity's curve as ezdxf evaluates it, densely (mm)."""
     if e.dxftype() == "SPLINE":
         bs = e.construction_tool()
-        pts = bs.points(np.linspace(0, bs.max_t, 40001))
+        pts = bs.points(np.linspace(0, bs.max_t, 20001))
     else:
-        pts = ezdxf.path.make_path(e).flattening(1e-6)
+        pts = ezdxf.path.make_path(e).flattening(1e-5)
     return shapely.LineString([(p.x, p.y) for p in pts])
 
 
 def _hausdorff(piece, truth: shapely.LineString) -> float:
     """The larger of the two directed distances: from every point of the
-    drawn piece (each chord cut in 16) to the curve, from every point of the
+    drawn piece (each chord cut in 4) to the curve, from every point of the
     dense curve to the piece."""
     a = np.asarray(piece, dtype=float)
-    f = np.linspace(0, 1, 17)[:-1, None, None]
+    f = np.linspace(0, 1, 5)[:-1, None, None]
     dense = (a[:-1] + f * (a[1:] - a[:-1])).transpose(1, 0, 2).reshape(-1, 2)
     dense = np.vstack([dense, a[-1:]])
     there = shapely.distance(shapely.points(dense), truth).max()
