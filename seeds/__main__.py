@@ -11,11 +11,12 @@ import argparse
 import sys
 from collections.abc import Callable, Sequence
 
-from . import gerber, seed001, seed002, seed003, seed004, tapereport, ural1
+from . import gerber, seed001, seed001_dmc, seed002, seed003, seed004, tapereport, ural1
 
 #: name -> function adding the subcommand's parser, in the documents' order.
 SUBCOMMANDS: dict[str, Callable[[argparse._SubParsersAction], None]] = {
     "dxf2deck": seed001.add_dxf2deck,
+    "dxf2dmc": seed001_dmc.add_dxf2dmc,
     "dxfboard": seed001.add_dxfboard,
     "gerber2deck": gerber.add_gerber2deck,
     "tapereport": tapereport.add_tapereport,

@@ -22,6 +22,9 @@ What is built (docs/SEED001-DXF.md says why):
   axis-parallel rectangle on a layer named ``PAD...`` is a rectangular pad.
   Bulges are cut into chords within 0.005 mm;
 * ARC -> ``A`` card (DXF arcs run counter-clockwise: direction ``-``);
+* SPLINE -> a conductor of chords, flattened by ezdxf within a stated
+  tolerance (``SPLINE_TOL``, 0.005 mm; the paper's fitting module for
+  higher-order curves); the report says how many were flattened;
 * INSERT -> its block's entities, exploded (blocks within blocks too; a
   block that inserts itself is reported, and a drawing that expands to more
   than ``ENTITY_BUDGET`` entities is refused: a few kilobytes of nested
@@ -70,6 +73,11 @@ BULGE_TOL = 0.005
 FIELD_MM = 1200.0
 #: The most entities a drawing may expand to, blocks exploded.
 ENTITY_BUDGET = 200_000
+#: Default tolerance (mm) within which a SPLINE is flattened into chords
+#: (the paper's "fitting module for higher-order curves", section 2).
+SPLINE_TOL = 0.005
+#: The most chord points one SPLINE may flatten into.
+SPLINE_POINTS = 100_000
 
 
 class _LeftOut(ValueError):
@@ -146,6 +154,8 @@ class Conversion:
     problems: list[str]
     ordered: bool
     bbox: tuple[float, float, float, float] | None
+    splines: int = 0
+    tolerance: float = SPLINE_TOL
 
 
 def _u(v: float) -> int:
@@ -245,9 +255,12 @@ def _polyline_item(e: Any, verts: list[tuple[Point, float]], closed: bool,
 
 @dataclass
 class _Budget:
-    """Entities left to expand (ENTITY_BUDGET at the start)."""
+    """The reading's state: entities left to expand (ENTITY_BUDGET at the
+    start), the tolerance splines are flattened within and how many were."""
 
     left: int = ENTITY_BUDGET
+    tol: float = SPLINE_TOL
+    splines: int = 0
 
     def take(self) -> None:
         self.left -= 1
@@ -352,6 +365,12 @@ def _entity_items_of(e: Any, origin: Point, problems: list[str], labels: list[La
         verts = [(p, float(v.dxf.bulge)) for p, v in zip(pts, e.vertices)]
         item = _polyline_item(e, verts, bool(e.is_closed), sw, origin, problems)
         return [item] if item else []
+    if kind == "SPLINE":
+        item = _spline_item(e, origin, budget.tol, problems)
+        if item is None:
+            return []
+        budget.splines += 1
+        return [item]
     if kind == "INSERT":
         name = e.dxf.name
         if name in blocks:
@@ -368,6 +387,34 @@ def _entity_items_of(e: Any, origin: Point, problems: list[str], labels: list[La
         return out
     problems.append(f"{_where(e)}: cannot map a {kind}; left out")
     return []
+
+
+def _spline_item(e: Any, origin: Point, tol: float, problems: list[str]) -> Item | None:
+    """A SPLINE flattened by ezdxf into chords within ``tol`` mm, as a
+    conductor (the width: the layer rule, else the tool).  Its control and
+    fit points are checked first (finite, on the field): ezdxf's flattening
+    recurses without end on a point that is not a number."""
+    ctrl = [tuple(v) for v in e.control_points] + [tuple(v) for v in e.fit_points]
+    _check_points(ctrl, origin)
+    extra = [float(w) for w in e.weights] + [float(k) for k in e.knots]
+    if not all(math.isfinite(v) for v in extra):
+        raise _LeftOut("a weight or knot is not a number")
+    pts: list[Point] = []
+    try:
+        for v in e.flattening(tol):
+            pts.append((float(v[0]), float(v[1])))
+            if len(pts) > SPLINE_POINTS:
+                raise _LeftOut(f"cannot be flattened within {tol:g} mm in at most "
+                               f"{SPLINE_POINTS} chords")
+    except _LeftOut:
+        raise
+    except (ValueError, ArithmeticError, IndexError, RecursionError, ezdxf.DXFError) as exc:
+        raise _LeftOut(f"cannot be flattened ({type(exc).__name__}: {exc})") from None
+    _check_points(pts, origin)
+    if len(pts) < 2:
+        raise _LeftOut("cannot be flattened (fewer than two points)")
+    verts = [(p, 0.0) for p in pts]
+    return _polyline_item(e, verts, False, 0.0, origin, problems)
 
 
 class _Nearest:
@@ -442,33 +489,86 @@ def _order(items: list[Item], labels: list[Label], problems: list[str]) -> tuple
         else:
             problems.append(f"{where}: text {lab.text!r} is not a label (FIRST, LAST, "
                             f"1, 2, ...); left out")
+    seq = sequence(len(items), first, numbered, last, problems)
+    if seq is None:
+        return items, False
+    return [items[i] for i in seq], True
+
+
+def sequence(n: int, first: list[int], numbered: dict[int, int], last: list[int],
+             problems: list[str]) -> list[int] | None:
+    """The drawing order of n items (indices) from the items FIRST, the
+    numbers and LAST are attached to (section 4 of the paper): FIRST, the
+    numbers in order (an item may carry several), the unlabelled items in
+    drawing order, LAST.  None when there is no label at all."""
     for name, got in (("FIRST", first), ("LAST", last)):
         if len(got) > 1:
             problems.append(f"{name} given {len(got)} times; the first one is used")
             del got[1:]
     if not (first or last or numbered):
-        return items, False
-    seq = first + [numbered[n] for n in sorted(numbered)]
+        return None
+    seq = first + [numbered[k] for k in sorted(numbered)]
     seen = set(seq) | set(last)
-    seq += [i for i in range(len(items)) if i not in seen] + last
+    seq += [i for i in range(n) if i not in seen] + last
     if last and last[0] in first + list(numbered.values()):
         problems.append("LAST is attached to an item that also has an earlier label")
-    return [items[i] for i in seq], True
+    return seq
 
 
-def convert(doc: Any, origin: Point = (0.0, 0.0)) -> Conversion:
-    """Items and problems of an ezdxf document's model space."""
+@dataclass
+class Reading:
+    """What one reading of a drawing's model space gives, for dxf2deck and
+    dxf2dmc alike: the items in drawing order, the texts (labels, macros,
+    hints), the problems so far (one line each, naming the entity's handle
+    and layer), how many SPLINEs were flattened and within what tolerance."""
+
+    items: list[Item]
+    labels: list[Label]
+    problems: list[str]
+    splines: int
+    tolerance: float
+
+    @property
+    def bbox(self) -> tuple[float, float, float, float] | None:
+        boxes = [_item_box(it) for it in self.items]
+        return (min(b[0] for b in boxes), min(b[1] for b in boxes),
+                max(b[2] for b in boxes), max(b[3] for b in boxes)) if boxes else None
+
+    def spline_note(self) -> str | None:
+        """The report's line on flattened splines (None when there were none)."""
+        if not self.splines:
+            return None
+        return (f"{self.splines} SPLINE{'s' if self.splines > 1 else ''} flattened into "
+                f"chords within {self.tolerance:g} mm")
+
+
+def check_tolerance(tol: float) -> float:
+    """A spline tolerance (mm) that can be met: finite, 0.0001 to 1 mm."""
+    tol = float(tol)
+    if not (math.isfinite(tol) and 0.0001 <= tol <= 1.0):
+        raise ValueError(f"tolerance {tol:g} mm is not between 0.0001 and 1 mm")
+    return tol
+
+
+def read_drawing(doc: Any, origin: Point = (0.0, 0.0), tolerance: float = SPLINE_TOL) -> Reading:
+    """Read an ezdxf document's model space: every entity becomes items, a
+    label, or a problem line (TooBig: the drawing expands past ENTITY_BUDGET)."""
     problems: list[str] = []
     labels: list[Label] = []
     items: list[Item] = []
-    budget = _Budget()
+    budget = _Budget(tol=check_tolerance(tolerance))
     for e in doc.modelspace():
         items += _entity_items(e, origin, problems, labels, budget)
-    ordered_items, ordered = _order(items, labels, problems)
-    boxes = [_item_box(it) for it in items]
-    bbox = (min(b[0] for b in boxes), min(b[1] for b in boxes),
-            max(b[2] for b in boxes), max(b[3] for b in boxes)) if boxes else None
-    return Conversion(ordered_items, problems, ordered, bbox)
+    return Reading(items, labels, problems, budget.splines, budget.tol)
+
+
+def convert(doc: Any, origin: Point = (0.0, 0.0), tolerance: float = SPLINE_TOL) -> Conversion:
+    """Items and problems of an ezdxf document's model space."""
+    reading = read_drawing(doc, origin, tolerance)
+    problems = reading.problems
+    ordered_items, ordered = _order(reading.items, reading.labels, problems)
+    return Conversion(ordered_items, problems, ordered, reading.bbox, reading.splines,
+                      reading.tolerance)
 
 
 def package_name(path: str | Path) -> str:
@@ -500,6 +600,28 @@ def _pair(text: str) -> Point:
     return x, y
 
 
+class Unreadable(Exception):
+    """A file that is not a DXF drawing ezdxf can read: the message names it."""
+
+
+def open_drawing(path: str) -> Any:
+    """The drawing of a DXF file, with its model space, or Unreadable."""
+    try:
+        doc = ezdxf.readfile(path)
+        doc.modelspace()
+    except OSError as exc:
+        raise Unreadable(f"{path}: {exc.strerror or exc}") from None
+    except ezdxf.DXFError as exc:
+        raise Unreadable(f"{path}: not a DXF drawing: {exc}") from None
+    except (ValueError, TypeError, LookupError, StopIteration, EOFError) as exc:
+        # ezdxf's tag loader raises these on a malformed file (a value that
+        # is not a number, a group code without its value at the end, a file
+        # without the model space's layout)
+        raise Unreadable(f"{path}: not a DXF drawing: {type(exc).__name__} "
+                         f"{exc}".rstrip()) from None
+    return doc
+
+
 def _run(args: argparse.Namespace) -> int:
     try:
         origin = _pair(args.origin) if args.origin else (0.0, 0.0)
@@ -507,30 +629,25 @@ def _run(args: argparse.Namespace) -> int:
         tools = tuple(Decimal(v) for v in args.tools.split(",")) if args.tools else None
         if tools is not None and len(tools) != 3:
             raise ValueError("--tools needs W1,W2,W3")
+        tol = check_tolerance(args.tolerance)
     except (ValueError, ArithmeticError) as exc:
         print(f"dxf2deck: {exc}", file=sys.stderr)
         return 2
     try:
-        doc = ezdxf.readfile(args.drawing)
-    except OSError as exc:
-        print(f"dxf2deck: {args.drawing}: {exc.strerror or exc}", file=sys.stderr)
-        return 2
-    except ezdxf.DXFError as exc:
-        print(f"dxf2deck: {args.drawing}: not a DXF drawing: {exc}", file=sys.stderr)
-        return 2
-    except (ValueError, TypeError, LookupError, StopIteration, EOFError) as exc:
-        # ezdxf's tag loader raises these on a malformed file (a value that
-        # is not a number, a group code without its value at the end)
-        print(f"dxf2deck: {args.drawing}: not a DXF drawing: {type(exc).__name__} "
-              f"{exc}".rstrip(), file=sys.stderr)
+        doc = open_drawing(args.drawing)
+    except Unreadable as exc:
+        print(f"dxf2deck: {exc}", file=sys.stderr)
         return 2
     try:
-        conv = convert(doc, origin)
+        conv = convert(doc, origin, tol)
     except TooBig as exc:
         print(f"dxf2deck: {args.drawing}: {exc}", file=sys.stderr)
         return 1
     for line in conv.problems:
         print(f"dxf2deck: {args.drawing}: {line}", file=sys.stderr)
+    if conv.splines:
+        print(f"dxf2deck: {args.drawing}: {conv.splines} SPLINE{'s' if conv.splines > 1 else ''} "
+              f"flattened into chords within {conv.tolerance:g} mm", file=sys.stderr)
     if not conv.items:
         print(f"dxf2deck: {args.drawing}: nothing to draw", file=sys.stderr)
         return 1
@@ -552,7 +669,8 @@ DXF2DECK_HELP = (
     "Turn a DXF drawing (mm) into a card deck: CIRCLE -> pad (layer RING*: "
     "circle), LWPOLYLINE/POLYLINE/LINE -> conductor (constant width, else "
     "a layer name ending _W<mm>, else the tool; closed rectangles on a PAD* "
-    "layer -> rectangular pads), ARC -> arc, INSERT exploded; TEXT labels "
+    "layer -> rectangular pads), SPLINE -> conductor of chords within "
+    "--tolerance, ARC -> arc, INSERT exploded; TEXT labels "
     "FIRST, LAST, 1, 2, 3 ... attach to the nearest item and fix the order.  "
     "Whatever cannot be mapped is reported with its handle and layer (exit "
     "status 1; the deck is still written).")
@@ -568,6 +686,8 @@ def _dxf2deck_arguments(p: argparse.ArgumentParser) -> None:
                         f"lower-left corner {MARGIN_MM} mm inside the field)")
     p.add_argument("--tools", metavar="W1,W2,W3", help="tools of the P card, mm")
     p.add_argument("--name", help="package name (default: from the file name)")
+    p.add_argument("--tolerance", metavar="MM", type=float, default=SPLINE_TOL,
+                   help=f"SPLINEs are flattened into chords within this (default {SPLINE_TOL} mm)")
     p.set_defaults(func=_run)
 
 
@@ -607,7 +727,8 @@ D = Decimal  # the board's figures are exact decimals, written short
 #     python -m seeds dxfboard examples/dxf
 #
 # writes ``board.dxf`` (the drawing, with the paper's ordering labels, a
-# macro, a hint and two entities dxf2deck cannot map) and ``board-known.crd``
+# macro, a hint and two entities dxf2deck cannot map: an ELLIPSE and a POINT)
+# and ``board-known.crd``
 # (the same board as cards, written directly).  ``python -m seeds dxf2deck
 # examples/dxf/board.dxf -o examples/dxf/board.crd`` must give a deck whose
 # tapes draw exactly the known board: seeds/tests/test_seed001_dxf.py runs
@@ -700,10 +821,11 @@ def write_dxf(path: str | Path, offset: tuple[float, float] = (0.0, 0.0)) -> Non
         msp.add_circle(pt(RING[0]), float(RING[1]), dxfattribs={"layer": "RING"})
         for text, at in LABELS:
             msp.add_text(text, height=1.0, dxfattribs={"insert": pt(at), "layer": "NOTES"})
-        # what dxf2deck reports and leaves out: a hint, a spline, a point
+        # what dxf2deck reports and leaves out: a hint, an ellipse, a point
+        # (a SPLINE would be flattened into a conductor of chords)
         msp.add_text("DRILL 0.8 MM", height=1.0, dxfattribs={"insert": pt((40, 46)),
                                                              "layer": "NOTES"})
-        msp.add_spline([pt((0, 0)), pt((30, -2)), pt((60, 0))], dxfattribs={"layer": "OUTLINE"})
+        msp.add_ellipse(pt((30, -2)), (30, 0), 0.1, dxfattribs={"layer": "OUTLINE"})
         msp.add_point(pt((30, 25)), dxfattribs={"layer": "OUTLINE"})
         buf = io.StringIO()
         doc.write(buf)

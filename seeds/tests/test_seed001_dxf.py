@@ -36,8 +36,8 @@ def test_the_drawing_becomes_the_known_boards_cards() -> None:
     deck = seed001.deck_text(conv, "BOARD")
     assert _data_cards(deck) == _data_cards(seed001.known_deck())
     assert conv.ordered
-    # reported with handle and layer: the spline, the point, the macro, the hint
-    assert any(p.startswith("SPLINE #") and "layer OUTLINE" in p for p in conv.problems)
+    # reported with handle and layer: the ellipse, the point, the macro, the hint
+    assert any(p.startswith("ELLIPSE #") and "layer OUTLINE" in p for p in conv.problems)
     assert any(p.startswith("POINT #") and "layer OUTLINE" in p for p in conv.problems)
     assert any("macro 'OUT 1' after FIRST" in p for p in conv.problems)
     assert any("'DRILL 0.8 MM' is not a label" in p and "layer NOTES" in p for p in conv.problems)
@@ -52,7 +52,7 @@ def test_round_trip_through_tenzor(run_tenzor, tmp_path: Path) -> None:
     seed001.write_dxf(drawing, offset=(50.0, 30.0))
     deck = tmp_path / "board.crd"
     status = main(["dxf2deck", str(drawing), "--origin", "50,30", "-o", str(deck)])
-    assert status == 1                              # the spline and the point were left out
+    assert status == 1                              # the ellipse and the point were left out
     assert _data_cards(deck.read_text()) == _data_cards(seed001.known_deck())
     proc, out = run_tenzor(deck)
     assert proc.returncode == 0, proc.stderr.decode("latin-1")
