@@ -210,8 +210,12 @@ contains
         integer function probe(key) result(k)
             integer(int64), intent(in) :: key
             integer(int64) :: v
-            v = key * 2654435761_int64
-            v = ieor(v, ishft(v, -31))
+            ! bits mixed by shifts and exclusive ors only: no product that
+            ! could overflow (the run-time checks trap a signed overflow)
+            v = ieor(key, ishft(key, -33))
+            v = ieor(v, ishft(v, 21))
+            v = ieor(v, ishft(v, -17))
+            v = ieor(v, ishft(v, 7))
             k = int(iand(v, int(size(head) - 1, int64)))
             do while (head(k) /= 0 .and. keys(k) /= key)
                 k = iand(k + 1, size(head) - 1)
