@@ -17,8 +17,8 @@ C     IMODE   (INPUT)  INTEGER  0 = THE ROUNDS ABOVE, FROM A NEW TOUR;
 C                               1 = ONLY THE ITEMS ALREADY QUEUED AND
 C                               THOSE THEIR MOVES QUEUE, 2-OPT AND
 C                               OR-OPT, TILL THE QUEUE IS EMPTY
-C                               (CMKICK); 2 = AS 1, AND EACH ITEM FROM THE
-C                               QUEUE ADDS 50 TO THE WORK KWORK
+C                               (CMKICK); 2 = AS 1, AND EACH ITEM FROM
+C                               THE QUEUE ADDS 50 TO THE WORK KWORK
 C     THE LENGTH THE MOVES TAKE OFF THE TOUR IS ADDED TO DGAIN.
 C     CHANGES: SEE THE HISTORY OF THE REPOSITORY (GIT LOG)
 C=======================================================================
