@@ -20,10 +20,14 @@ def test_instance_reads_back_whole(name):
     pts = inst.points()
     assert pts[0] == (0, 0)
     assert max(max(abs(x), abs(y)) for x, y in pts) <= tsplib.FIELD
-    # one decimal at most: the scale keeps every coordinate exact
+    # the deck's coordinates are the instance's, scaled, within half a unit
+    # (exact where TSPLIB gives one decimal at most: all but u574)
     s = inst.scale
-    assert all(abs((x - inst.nodes[0][0]) * s - px) < 1e-6
-               for (x, _), (px, _) in zip(inst.nodes, pts))
+    err = max(max(abs((x - inst.nodes[0][0]) * s - px), abs((y - inst.nodes[0][1]) * s - py))
+              for (x, y), (px, py) in zip(inst.nodes, pts))
+    assert err <= 0.5 + 1e-6
+    if name != "u574":
+        assert err < 1e-6
     assert inst.deck().count("\nD ") == len(inst.nodes)
 
 
