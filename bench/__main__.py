@@ -5,6 +5,9 @@ names a binary), runs every board, prints the table and the targets, and
 writes ``bench.csv``, ``bench.txt`` (the table and the targets),
 ``bench.md`` (the table in Markdown) and ``bench.svg`` into ``--out``
 (default ``out/bench``; the decks and tapes go to ``--out``/scratch).
+Then the TSPLIB drilling problems of ``bench/tsplib/`` (:mod:`bench.tsplib`):
+TENZOR's tour against the proven optimum, LKH-3's single run and OR-Tools,
+into ``tsplib.csv`` and the same text files (``--tsplib``, ``--no-tsplib``).
 ``--report CSV`` re-renders an earlier run without running anything.
 Exit status 0, or 2 for a usage or build problem.
 """
@@ -22,7 +25,7 @@ from pathlib import Path
 
 from harness.files import write_whole
 
-from . import boards, report, run_board, tours
+from . import boards, report, run_board, tours, tsplib
 
 ROOT = Path(__file__).resolve().parents[1]
 
@@ -84,18 +87,30 @@ def build_parser() -> argparse.ArgumentParser:
                    help="smallest board checked by verify (default 10000)")
     p.add_argument("--tenzor", type=Path, metavar="EXE",
                    help="the TENZOR binary to time (default: build the release profile)")
+    p.add_argument("--tsplib", metavar="NAME,...",
+                   help="TSPLIB instances to run (default: all of "
+                        + ",".join(tsplib.NAMES) + "; --quick: d198,pcb442)")
+    p.add_argument("--no-tsplib", action="store_true", help="run no TSPLIB instance")
+    p.add_argument("--no-tsplib-refs", action="store_true",
+                   help="TSPLIB: TENZOR only, no LKH-3 or OR-Tools (their time dominates)")
     p.add_argument("--report", type=Path, metavar="CSV",
                    help="run nothing: print the table and targets of an earlier bench.csv "
                         "and write its bench.txt, bench.md and bench.svg into --out")
     return p
 
 
-def write_outputs(rows: Sequence[dict], out: Path) -> str:
-    """bench.txt, bench.md and bench.svg of the rows (bench.csv is the
-    caller's); returns the text of bench.txt."""
+def write_outputs(rows: Sequence[dict], out: Path,
+                  tsp_rows: Sequence[dict] = ()) -> str:
+    """bench.txt, bench.md and bench.svg of the rows (bench.csv and
+    tsplib.csv are the caller's); returns the text of bench.txt."""
     text = report.table(rows) + "\n" + report.targets_text(rows)
+    md = report.table(rows, markdown=True)
+    if tsp_rows:
+        text += ("\nTSPLIB drilling problems (% over the proven optimum)\n\n"
+                 + report.tsplib_table(tsp_rows) + "\n" + report.tsplib_targets_text(tsp_rows))
+        md += "\n" + report.tsplib_table(tsp_rows, markdown=True)
     write_whole(out / "bench.txt", text)
-    write_whole(out / "bench.md", report.table(rows, markdown=True))
+    write_whole(out / "bench.md", md)
     write_whole(out / "bench.svg", report.svg(rows))
     return text
 
@@ -109,7 +124,9 @@ def main(argv: Sequence[str] | None = None) -> int:
             print(f"{args.report}: {exc.strerror or exc}", file=sys.stderr)
             return 2
         args.out.mkdir(parents=True, exist_ok=True)
-        print(write_outputs(rows, args.out), end="")
+        tsp_csv = args.report.with_name("tsplib.csv")
+        tsp_rows = report.read_csv(tsp_csv) if tsp_csv.exists() else []
+        print(write_outputs(rows, args.out, tsp_rows), end="")
         return 0
     sizes = args.sizes or ([100, 1000] if args.quick else list(boards.SIZES))
     repeats = args.repeats or (2 if args.quick else 5)
@@ -147,8 +164,21 @@ def main(argv: Sequence[str] | None = None) -> int:
             print(f"  {row['board']}: TENZOR {row['tenzor_s']:.3f} s, "
                   f"{row['peak_rss_mb']:.1f} MB{checked}; board done in "
                   f"{time.perf_counter() - t:.0f} s", flush=True)
+    tsp_rows = []
+    names = ([] if args.no_tsplib else
+             [n for n in (args.tsplib or ("d198,pcb442" if args.quick else
+                                          ",".join(tsplib.NAMES))).split(",") if n])
+    for name in names:
+        t = time.perf_counter()
+        row = tsplib.run_instance(name, exe, scratch, repeats, args.min_seconds,
+                                  refs=not args.no_tsplib_refs)
+        tsp_rows.append(row)
+        print(f"  {name}: TENZOR {row['tenzor_pct']:.2f} % over the optimum, "
+              f"{row['tenzor_s']:.3f} s; done in {time.perf_counter() - t:.0f} s", flush=True)
     report.write_csv(rows, out / "bench.csv")
-    text = write_outputs(rows, out)
+    if tsp_rows:
+        report.write_tsplib_csv(tsp_rows, out / "tsplib.csv")
+    text = write_outputs(rows, out, tsp_rows)
     print()
     print(text, end="")
     print(f"\n{len(rows)} boards in {time.perf_counter() - started:.0f} s; "

@@ -120,9 +120,11 @@ def _cell(value: object, fmt: str) -> str:
     return format(v, fmt)
 
 
-def table(rows: Sequence[dict], markdown: bool = False) -> str:
-    heads = [h for h, _, _ in TABLE]
-    body = [[_cell(r.get(k), f) for _, k, f in TABLE] for r in rows]
+def table(rows: Sequence[dict], markdown: bool = False,
+          columns: Sequence[tuple[str, str, str]] | None = None) -> str:
+    columns = TABLE if columns is None else columns
+    heads = [h for h, _, _ in columns]
+    body = [[_cell(r.get(k), f) for _, k, f in columns] for r in rows]
     if markdown:
         out = ["| " + " | ".join(heads) + " |",
                "|" + "|".join("---" if i == 0 else "--:" for i in range(len(heads))) + "|"]
@@ -225,6 +227,75 @@ def targets_text(rows: Sequence[dict]) -> str:
         mark = {True: "MET   ", False: "MISSED", None: "      "}[met]
         lines.append(f"{mark} {what}: {figures}")
     return "\n".join(lines) + "\n"
+
+
+# ---------------------------------------------------------------------------
+# The TSPLIB drilling problems (bench/tsplib.py).
+# ---------------------------------------------------------------------------
+#: CSV columns of tsplib.csv, in order, with what each holds.
+TSPLIB_COLUMNS: dict[str, str] = {
+    "instance": "TSPLIB instance",
+    "nodes": "its nodes (the pads of the deck)",
+    "type": "its distance function (EUC_2D: nint of the Euclidean distance)",
+    "optimum": "the proven optimal tour length (TSPLIB)",
+    "tenzor_len": "TENZOR's tour, the order of its small-pad tape, with the instance's distance",
+    "tenzor_pct": "TENZOR's tour over the optimum, per cent",
+    "tenzor_s": "TENZOR deck to tapes, wall seconds, minimum of the repeats",
+    "tenzor_cpu_s": "TENZOR's CPU time (user + system), minimum of the repeats",
+    "peak_rss_mb": "TENZOR's peak resident set size, MiB (VmHWM)",
+    "lkh_len": "LKH-3 (elkai), one run with its default parameters, seed 1",
+    "lkh_pct": "LKH-3's tour over the optimum, per cent",
+    "lkh_s": "LKH-3's seconds",
+    "time_vs_lkh": "tenzor_s / lkh_s",
+    "ortools1_pct": "OR-Tools, guided local search for 1 s, over the optimum, per cent",
+    "ortools3_pct": "the same, 3 s",
+}
+
+#: The targets of the TSPLIB boards: within 1 % of the optimum, in at most a
+#: hundredth of LKH-3's time and under 1.5 s.
+TARGET_TSPLIB_PCT = 1.0
+TARGET_TSPLIB_TIME_RATIO = 0.01
+TARGET_TSPLIB_SECONDS = 1.5
+
+TSPLIB_TABLE: tuple[tuple[str, str, str], ...] = (
+    ("instance", "instance", "s"), ("nodes", "nodes", "d"), ("optimum", "optimum", "d"),
+    ("TENZOR %", "tenzor_pct", ".2f"), ("TENZOR s", "tenzor_s", ".3f"),
+    ("CPU s", "tenzor_cpu_s", ".3f"), ("RSS MB", "peak_rss_mb", ".1f"),
+    ("LKH-3 %", "lkh_pct", ".2f"), ("LKH-3 s", "lkh_s", ".2f"),
+    ("T s/LKH s", "time_vs_lkh", ".4f"),
+    ("OR-Tools 1 s %", "ortools1_pct", ".1f"), ("OR-Tools 3 s %", "ortools3_pct", ".1f"),
+)
+
+
+def tsplib_table(rows: Sequence[dict], markdown: bool = False) -> str:
+    return table(rows, markdown, TSPLIB_TABLE)
+
+
+def tsplib_targets_text(rows: Sequence[dict]) -> str:
+    if not rows:
+        return ""
+    lines = []
+    for r in rows:
+        pct, secs, ratio = _num(r, "tenzor_pct"), _num(r, "tenzor_s"), _num(r, "time_vs_lkh")
+        marks = [f"{'MET   ' if pct <= TARGET_TSPLIB_PCT else 'MISSED'} {r['instance']} "
+                 f"within {TARGET_TSPLIB_PCT:g} % of the optimum: {pct:.2f} %",
+                 f"{'MET   ' if secs < TARGET_TSPLIB_SECONDS else 'MISSED'} {r['instance']} "
+                 f"under {TARGET_TSPLIB_SECONDS:g} s: {secs:.3f} s"]
+        if ratio is not None:
+            marks.append(f"{'MET   ' if ratio <= TARGET_TSPLIB_TIME_RATIO else 'MISSED'} "
+                         f"{r['instance']} at most {TARGET_TSPLIB_TIME_RATIO:g} of LKH-3's time: "
+                         f"{ratio:.4f}")
+        lines += marks
+    return "\n".join(lines) + "\n"
+
+
+def write_tsplib_csv(rows: Sequence[dict], path: Path) -> None:
+    buf = io.StringIO()
+    w = csv.DictWriter(buf, fieldnames=list(TSPLIB_COLUMNS), lineterminator="\n")
+    w.writeheader()
+    for r in rows:
+        w.writerow({k: _fmt(r.get(k)) for k in TSPLIB_COLUMNS})
+    write_whole(path, buf.getvalue())
 
 
 # ---------------------------------------------------------------------------

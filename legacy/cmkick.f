@@ -15,11 +15,14 @@ C              FOR 32-BIT INTEGERS, FROM A FIXED SEED: THE SAME DECK
 C              GIVES THE SAME TOUR.
 C     NKICK   (INPUT)  INTEGER  THE NUMBER OF KICKS; FEWER WHEN THE
 C                               WORK BOUND KWMAX IS REACHED
+C     MODE    (INPUT)  INTEGER  THE MODE OF CMOPT2'S REPAIRS: 1 = THE
+C                               WORK COUNTS ITEMS MOVED, 2 = ALSO THE
+C                               ITEMS LOOKED AT
 C     CHANGES: SEE THE HISTORY OF THE REPOSITORY (GIT LOG)
 C=======================================================================
-      SUBROUTINE CMKICK(NKICK)
+      SUBROUTINE CMKICK(NKICK, MODE)
       IMPLICIT NONE
-      INTEGER NKICK
+      INTEGER NKICK, MODE
 C     ---- /CMITM/ THE ITEMS OF A TAPE AND THE TOUR THROUGH THEM -------
       INTEGER MXITM
       PARAMETER (MXITM = 300000)
@@ -104,7 +107,7 @@ C        ---- REPAIR AROUND THE THREE NEW MOVES ------------------------
             IF (IK + L2 .LE. NITM) CALL CMQPSH(ITOUR(IK + L2))
             IF (IK + L1 + L2 .LE. NITM) CALL CMQPSH(ITOUR(IK + L1 + L2))
    10    CONTINUE
-         CALL CMOPT2(1)
+         CALL CMOPT2(MODE)
 C        ---- KEEP A SHORTER TOUR; ELSE UNDO, LAST REVERSAL FIRST ------
          IF (LJRN .EQ. 1 .AND. DGAIN .LE. 1.0D-6) THEN
             LJRN = 0

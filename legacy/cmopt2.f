@@ -16,7 +16,9 @@ C              ROUND MAKES NO MOVE OR THE WORK BOUND IS REACHED.
 C     IMODE   (INPUT)  INTEGER  0 = THE ROUNDS ABOVE, FROM A NEW TOUR;
 C                               1 = ONLY THE ITEMS ALREADY QUEUED AND
 C                               THOSE THEIR MOVES QUEUE, 2-OPT AND
-C                               OR-OPT, TILL THE QUEUE IS EMPTY (CMKICK)
+C                               OR-OPT, TILL THE QUEUE IS EMPTY
+C                               (CMKICK); 2 = AS 1, AND EACH ITEM FROM
+C                               THE QUEUE ADDS 50 TO THE WORK KWORK
 C     THE LENGTH THE MOVES TAKE OFF THE TOUR IS ADDED TO DGAIN.
 C     CHANGES: SEE THE HISTORY OF THE REPOSITORY (GIT LOG)
 C=======================================================================
@@ -62,7 +64,7 @@ C     THE DISTANCE OF TWO POINTS: A STATEMENT FUNCTION, NO CALL
      1   (DBLE(JY1) - JY2)**2)
 C
       NROUND = 0
-      IF (IMODE .EQ. 1) THEN
+      IF (IMODE .GE. 1) THEN
          NROUND = 2
          NMOVE = 0
          GOTO 20
@@ -81,7 +83,7 @@ C     ---- TAKE THE NEXT ITEM ------------------------------------------
    20 CONTINUE
       IF (KWORK .GT. KWMAX) RETURN
       IF (KQN .EQ. 0) THEN
-         IF (IMODE .EQ. 1) RETURN
+         IF (IMODE .GE. 1) RETURN
          IF ((NMOVE .EQ. 0 .AND. NROUND .GT. 1) .OR. NROUND .GE. 10)
      1      RETURN
          GOTO 5
@@ -90,10 +92,11 @@ C     ---- TAKE THE NEXT ITEM ------------------------------------------
       KQHD = MOD(KQHD, NITM) + 1
       KQN = KQN - 1
       LQUE(M) = 0
+      IF (IMODE .EQ. 2) KWORK = KWORK + 50
    25 CONTINUE
 C     A KICK'S REPAIR STOPS BEFORE ITS JOURNAL IS FULL (A MOVE WRITES
 C     AT MOST THREE REVERSALS), SO THAT CMKICK CAN ALWAYS UNDO IT
-      IF (IMODE .EQ. 1 .AND. NJRN .GT. MXJRN - 3) RETURN
+      IF (IMODE .GE. 1 .AND. NJRN .GT. MXJRN - 3) RETURN
       DO 60 ISIDE = 1, 2
          IP = IPOS(M)
          IF (ISIDE .EQ. 1) THEN

@@ -22,6 +22,7 @@ ROOT = Path(__file__).resolve().parents[2]
 def quick_run(tenzor_exe, tmp_path_factory):
     out = tmp_path_factory.mktemp("bench")
     status = bench_main.main(["--quick", "--sizes", "100", "--repeats", "1", "--min-seconds", "0",
+                              "--no-tsplib",
                               "--tenzor", str(tenzor_exe), "--out", str(out)])
     assert status == 0
     return out

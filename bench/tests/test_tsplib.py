@@ -1,0 +1,46 @@
+"""The TSPLIB drilling problems of the benchmark: the copies and their scoring.
+
+TENZOR's figure on them belongs in the benchmark's output and in
+docs/PERFORMANCE.md; here only that the instances read back whole, that the
+decks fit the field, and that TENZOR's tape of d198 visits every node once
+with a tour no shorter than the proven optimum.
+"""
+from __future__ import annotations
+
+import pytest
+
+from bench import report, tsplib
+
+
+@pytest.mark.parametrize("name", tsplib.NAMES)
+def test_instance_reads_back_whole(name):
+    inst = tsplib.load(name)
+    assert inst.name == name and inst.kind == "EUC_2D" and inst.optimum > 0
+    assert len(inst.nodes) == int(name.lstrip("dpcbu"))
+    pts = inst.points()
+    assert pts[0] == (0, 0)
+    assert max(max(abs(x), abs(y)) for x, y in pts) <= tsplib.FIELD
+    # the deck's coordinates are the instance's, scaled, within half a unit
+    # (exact where TSPLIB gives one decimal at most: all but u574 and u1060)
+    s = inst.scale
+    err = max(max(abs((x - inst.nodes[0][0]) * s - px), abs((y - inst.nodes[0][1]) * s - py))
+              for (x, y), (px, py) in zip(inst.nodes, pts))
+    assert err <= 0.5 + 1e-6
+    if name not in ("u574", "u1060"):
+        assert err < 1e-6
+    assert inst.deck().count("\nD ") == len(inst.nodes)
+
+
+def test_distance_is_tsplib_nint():
+    inst = tsplib.Instance("t", "EUC_2D", 1, ((0.0, 0.0), (3.0, 4.4), (0.0, 0.5)))
+    assert inst.dist(0, 1) == 5          # 5.37 -> 5
+    assert inst.dist(0, 2) == 1          # 0.5 -> 1 (nint rounds half up, as TSPLIB's (int)(d + 0.5))
+    assert inst.dist(1, 2) == 5          # 4.92 -> 5
+    assert inst.tour_length([0, 1, 2]) == 5 + 5 + 1
+
+
+def test_tenzor_tours_d198(tenzor_exe, tmp_path):
+    row = tsplib.run_instance("d198", tenzor_exe, tmp_path, 1, 0.0, refs=False)
+    assert row["tenzor_len"] >= row["optimum"]
+    assert 0 <= row["tenzor_pct"] < 10
+    assert report.tsplib_table([row]).count("d198") == 1
