@@ -38,7 +38,7 @@ module em703_gcode
     use base_error, only: error_t
     implicit none
     private
-    public :: gcode_program, chord_count
+    public :: gcode_program, chord_count, clean
 
     !> Chord ends are written to 0.001 mm: each is within 0.00071 mm of the
     !> arc, so the chords are planned for tol - ROUNDING.

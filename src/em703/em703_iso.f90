@@ -33,7 +33,7 @@ module em703_iso
     use, intrinsic :: iso_fortran_env, only: int64, real64
     use em703_sim, only: run_t, seg_t, walker_t, walk_start, next_seg, SEG_LINE, SEG_TRAVEL, &
                          SEG_ARC, SEG_DOT, SEG_RAISE, LINE_SPEED, ARC_SPEED
-    use em703_gcode, only: chord_count
+    use em703_gcode, only: chord_count, plain => clean
     use em703_split, only: frames_needed, split_frame
     use base_text, only: text_t, str
     use base_error, only: error_t
@@ -280,21 +280,6 @@ contains
             end if
         end select
     end subroutine move
-
-    !> A comment's text in characters that ISO and EIA tape both have.
-    function plain(s) result(t)
-        character(len=*), intent(in) :: s
-        character(len=len(s)) :: t
-        integer :: i
-        t = s
-        do i = 1, len(t)
-            select case (t(i:i))
-            case ('a':'z', 'A':'Z', '0':'9', ' ', '.', ',', '-', '+', '/')
-            case default
-                t(i:i) = '-'
-            end select
-        end do
-    end function plain
 
     ! ------------------------------------------------------------------
     !> The group of G code g (0..99): 1 G00-G09, 2 G10-G39, 3 G40-G59,
