@@ -1,16 +1,16 @@
-!> File input and output of the modern tools: a whole file as bytes or as text,
-!> a file written whole or not at all (base_files: a fresh temporary file,
-!> fsynced, renamed; a failed run never leaves half a file), text to standard
-!> output. Every
-!> statement that can fail has iostat and iomsg; failures come back as an
-!> error_t naming the file.
+!> File input and output of the modern tools: a whole file as text, a file
+!> written whole or not at all (base_files: a fresh temporary file, fsynced,
+!> renamed; a failed run never leaves half a file), a message on standard
+!> error. (Long outputs are streamed by base_text's text_t attached to a
+!> file of base_files' open_out, or to standard output.) Failures come back
+!> as an error_t naming the file.
 module base_io
-    use, intrinsic :: iso_fortran_env, only: output_unit, error_unit, int64
+    use, intrinsic :: iso_fortran_env, only: error_unit, int64
     use base_error, only: error_t, new_error, no_memory
     use base_files, only: write_whole, read_whole
     implicit none
     private
-    public :: read_bytes, read_text, write_bytes, write_text, print_text, dir_of, say
+    public :: read_text, write_bytes, write_text, dir_of, say
 
 contains
 
@@ -34,22 +34,6 @@ contains
             err%file = path
         end if
     end subroutine read_text
-
-    !> The whole file as byte values 0..255, one per row of a tape image.
-    subroutine read_bytes(path, rows, err)
-        character(len=*), intent(in) :: path
-        integer, allocatable, intent(out) :: rows(:)
-        type(error_t), allocatable, intent(out) :: err
-        character(len=:), allocatable :: text
-        integer :: i, st
-        call read_text(path, text, err)
-        allocate(rows(len(text)), stat=st)
-        if (st /= 0) call no_memory('the tape', 4 * int(len(text), int64))
-        if (allocated(err)) return
-        do i = 1, len(text)
-            rows(i) = iachar(text(i:i))
-        end do
-    end subroutine read_bytes
 
     !> Write bytes (values 0..255) as a file.
     subroutine write_bytes(path, rows, err)
@@ -79,23 +63,6 @@ contains
             err%file = path
         end if
     end subroutine write_text
-
-    !> Text (lines ending in newlines) on standard output, line by line.
-    subroutine print_text(text)
-        character(len=*), intent(in) :: text
-        integer :: i, j, ios
-        i = 1
-        do while (i <= len(text))
-            j = index(text(i:), achar(10))
-            if (j == 0) then
-                write(output_unit, '(a)', iostat=ios) text(i:)
-                exit
-            end if
-            write(output_unit, '(a)', iostat=ios) text(i:i + j - 2)
-            i = i + j
-        end do
-        flush(output_unit)
-    end subroutine print_text
 
     !> The directory part of a path with its slash ("" for a bare name).
     function dir_of(path) result(dir)

@@ -17,7 +17,7 @@ module em703_codec
     use base_text, only: str, octal, fixed, text_t
     implicit none
     private
-    public :: frame_t, tape_t, decode_tape, decode_bytes, decoder_start, next_frame, &
+    public :: frame_t, tape_t, decode_tape, decoder_start, next_frame, &
               encode_tape, frame_rows, frame_text, &
               tape_text, on_circle, frame_problem, describe_row
 

@@ -22,12 +22,12 @@
 module em703_drill
     use, intrinsic :: iso_fortran_env, only: int64, real64
     use em703_sim, only: run_t, seg_t, walker_t, walk_start, next_seg, seg_box, &
-                         SEG_LINE, SEG_TRAVEL, SEG_ARC, SEG_DOT, SEG_RAISE
+                         SEG_TRAVEL, SEG_ARC, SEG_DOT, SEG_RAISE
     use base_error, only: error_t, no_memory
     use base_text, only: text_t, str, fixed
     implicit none
     private
-    public :: hole_t, find_holes, drill_program
+    public :: find_holes, drill_program
 
     !> A hole: its centre in half units (0.005 mm) and its diameter in units.
     type, public :: hole_t
@@ -57,7 +57,7 @@ contains
     subroutine find_holes(run, tool, holes, n)
         type(run_t), intent(in) :: run
         integer(int64), intent(in) :: tool
-        type(hole_t), allocatable, intent(inout) :: holes(:)
+        type(hole_t), allocatable, intent(inout) :: holes(:)   !< allocated; holes(1:n) in use
         integer, intent(inout) :: n
         type(pass_t), allocatable :: passes(:)
         integer, allocatable :: head(:), nxt(:), member(:)
@@ -279,7 +279,6 @@ contains
             h%x2 = nint(box(1) + box(2), int64)
             h%y2 = nint(box(3) + box(4), int64)
             h%d = nint(min(box(2) - box(1), box(4) - box(3)), int64) + tool
-            if (.not. allocated(holes)) allocate(holes(64))
             if (n == size(holes)) then
                 allocate(more(max(64, 2 * size(holes))), stat=st)
                 if (st /= 0) call no_memory('the holes', int(2 * size(holes), int64) * 24)
@@ -329,7 +328,7 @@ contains
                 call text%add('T' // two(t))
                 current = t
             end if
-            call text%add('X' // half(holes(i)%x2) // 'Y' // half(holes(i)%y2))
+            call text%add('X' // halves_mm(holes(i)%x2) // 'Y' // halves_mm(holes(i)%y2))
         end do
         call text%add('M30')
     contains
@@ -342,7 +341,7 @@ contains
     end subroutine drill_program
 
     !> Half units (0.005 mm) as mm with three decimals.
-    function half(v) result(s)
+    function halves_mm(v) result(s)
         integer(int64), intent(in) :: v
         character(len=:), allocatable :: s
         integer(int64) :: a
@@ -351,7 +350,7 @@ contains
         write(frac, '(i3.3)') mod(a, 1000_int64)
         s = str(a / 1000) // '.' // frac
         if (v < 0) s = '-' // s
-    end function half
+    end function halves_mm
 
     !> Comment text in printable ASCII.
     function clean(s) result(t)

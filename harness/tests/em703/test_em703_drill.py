@@ -15,10 +15,11 @@ import shutil
 import subprocess
 from pathlib import Path
 
+import numpy as np
 import pytest
 
 from harness.deck import parse_deck
-from harness.sim import Arc, Dot, Line, simulate
+from harness.sim import Dot, simulate
 from harness.tape import decode
 
 from harness.tests.helpers import keys, run
@@ -114,16 +115,47 @@ def test_every_pad_of_every_example_is_a_hit_in_tour_order(em703_exe, examples, 
 
 @pytest.mark.skipif(GERBV is None, reason="gerbv (Debian package gerbv) is not on PATH")
 def test_gerbv_reads_the_drill_file(em703_exe, examples, tmp_path) -> None:
-    """gerbv renders the drill file of the demo board: the holes are there."""
+    """gerbv renders the demo board's drill file: at 0.05 mm a pixel every hit
+    is a dark disc of its tool's diameter (its centre dark, a point just
+    outside it light, unless another hole is there), and nothing is dark
+    outside the holes."""
+    from harness.tests.em703.test_em703_gerber import read_png
     demo = next(e for e in examples if e.deck.name == "demo.crd")
     job = next(iter(demo.jobs))
     drl = tmp_path / "demo.drl"
-    run(em703_exe, "drill", job, "-o", drl)
+    run(em703_exe, "drill", job, "-o", drl, check=0)
+    hits = read_drill(drl.read_text())
+    pitch = 0.05                                             # mm a pixel: 508 dpi
+    x0 = min(x - d for x, _, d in hits) / 200 - 1
+    y0 = min(y - d for _, y, d in hits) / 200 - 1
+    nx = int((max(x + d for x, _, d in hits) / 200 + 1 - x0) / pitch)
+    ny = int((max(y + d for _, y, d in hits) / 200 + 1 - y0) / pitch)
     png = tmp_path / "demo.png"
-    got = subprocess.run([GERBV, "-x", "png", "-D", "200", "-b", "#ffffff", "-f", "#000000ff",
-                          "-o", str(png), str(drl)], capture_output=True, timeout=60)
-    assert got.returncode == 0 and png.stat().st_size > 0, got.stderr
-    assert b"rror" not in got.stderr, got.stderr
+    got = subprocess.run([GERBV, "-a", "-x", "png", "-u", "mm", "-D", "508",
+                          "-O", f"{x0:.2f}x{y0:.2f}", "-w", f"{nx}x{ny}", "-B", "0",
+                          "-b", "#000000", "-f", "#ffffffff", "-o", str(png), str(drl)],
+                         capture_output=True, timeout=60)
+    assert got.returncode == 0 and png.exists(), got.stderr
+    dark = read_png(png)[::-1, :] > 127                      # rows from the bottom
+
+    def pixel(x_mm: float, y_mm: float) -> bool:
+        return bool(dark[int((y_mm - y0) / pitch), int((x_mm - x0) / pitch)])
+
+    def in_a_hole(x_mm: float, y_mm: float) -> bool:
+        return any((x_mm - hx / 200) ** 2 + (y_mm - hy / 200) ** 2 <= (hd / 200 + 0.1) ** 2
+                   for hx, hy, hd in hits)
+
+    for x, y, d in hits:
+        cx, cy, r = x / 200, y / 200, d / 200
+        assert pixel(cx, cy), (cx, cy)
+        for dx, dy in ((1, 0), (-1, 0), (0, 1), (0, -1)):
+            assert pixel(cx + dx * (r - 0.15), cy + dy * (r - 0.15)), (cx, cy, d)
+            out = (cx + dx * (r + 0.15), cy + dy * (r + 0.15))
+            if not in_a_hole(out[0] + dx * 0.1, out[1] + dy * 0.1):
+                assert not pixel(*out), (cx, cy, d, out)
+    ys, xs = np.nonzero(dark)
+    assert all(in_a_hole(x0 + (i + 0.5) * pitch, y0 + (j + 0.5) * pitch)
+               for i, j in zip(xs[::97], ys[::97]))
 
 
 def test_bad_input_to_drill(em703_exe, examples, tmp_path) -> None:
