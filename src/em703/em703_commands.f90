@@ -97,40 +97,45 @@ contains
     !> Open an output: the file path, written whole or not at all (a fresh
     !> temporary file, renamed by close_output), or standard output when
     !> path is "" or "-". text becomes a stream into it, so that an output
-    !> of any size takes a bounded buffer. Status 2 (and a message) when
-    !> path is one of the run's inputs or cannot be created.
-    integer function open_output(path, text, tmp) result(status)
+    !> of any size takes a bounded buffer. False, with status 2 and a
+    !> message, when path is one of the run's inputs or cannot be created;
+    !> else status is left as it was.
+    logical function opened(path, text, tmp, status)
         character(len=*), intent(in) :: path
         type(text_t), intent(inout) :: text
         character(len=:), allocatable, intent(out) :: tmp
+        integer, intent(inout) :: status
         character(len=:), allocatable :: msg
         integer :: fd
         tmp = ''
-        status = EXIT_OK
+        opened = .true.
         if (len(path) == 0 .or. path == '-') then
             flush(output_unit)
             call text%attach(1)
             return
         end if
-        status = refuse_input(path)
-        if (status /= EXIT_OK) return
-        call open_out(path, fd, tmp, msg)
-        if (len(msg) > 0) then
-            call cannot_write(path, msg)
+        opened = refuse_input(path) == EXIT_OK
+        if (opened) then
+            call open_out(path, fd, tmp, msg)
+            opened = len(msg) == 0
+            if (.not. opened) call cannot_write(path, msg)
+        end if
+        if (.not. opened) then
             status = EXIT_USAGE
             return
         end if
         call text%attach(fd)
-    end function open_output
+    end function opened
 
-    !> End an output of open_output: the rest written, the file fsynced,
-    !> checked and renamed into place; on any failure the earlier file is
-    !> left as it was, no temporary file is left, and the status is 2.
-    integer function close_output(path, text, tmp) result(status)
+    !> End an output of opened: the rest written, the file fsynced, checked
+    !> and renamed into place; on any failure the earlier file is left as it
+    !> was, no temporary file is left, and the status becomes 2 (else it is
+    !> left as it was).
+    subroutine close_output(path, text, tmp, status)
         character(len=*), intent(in) :: path, tmp
         type(text_t), intent(inout) :: text
+        integer, intent(inout) :: status
         character(len=:), allocatable :: msg
-        status = EXIT_OK
         call text%drain()
         if (text%fd == 1) then
             if (allocated(text%message)) then
@@ -151,7 +156,7 @@ contains
             call cannot_write(path, msg)
             status = EXIT_USAGE
         end if
-    end function close_output
+    end subroutine close_output
 
     subroutine cannot_write(path, msg)
         character(len=*), intent(in) :: path, msg
@@ -218,7 +223,7 @@ contains
         type(error_t), allocatable :: err
         type(text_t) :: text
         logical :: got
-        integer :: n, s2
+        integer :: n
         call read_tape(path, bytes, status)
         if (status /= EXIT_OK) return
         call decoder_start(dec, bytes, code, err)
@@ -231,7 +236,7 @@ contains
             call say(error_text(err))
             status = EXIT_INPUT
         end if
-        s2 = open_output('', text, tmp)
+        if (.not. opened('', text, tmp, status)) return
         if (.not. bare) then
             head = '# code ' // dec%code
             if (.not. dec%told) head = head // ' (no digit row tells 8 from K)'
@@ -255,8 +260,7 @@ contains
             end do
             if (status == EXIT_OK) call text%add(gm)
         end if
-        s2 = close_output('', text, tmp)
-        if (s2 /= EXIT_OK) status = s2
+        call close_output('', text, tmp, status)
     end function run_list
 
     ! ------------------------------------------------------------------
@@ -269,7 +273,6 @@ contains
         type(text_t) :: text, svg
         type(error_t), allocatable :: field_err
         character(len=:), allocatable :: tmp
-        integer :: s2
         call load_run(path, code, run, status)
         if (status /= EXIT_OK) return
         call field_check(run, start_x, start_y, num, den, field_err)
@@ -294,15 +297,16 @@ contains
         call text%add('start_x_mm = ' // mm(start_x))
         call text%add('start_y_mm = ' // mm(start_y))
         call text%add('field = ' // trim(merge('left  ', 'inside', allocated(field_err))))
-        s2 = open_output('', text, tmp)
-        s2 = close_output('', text, tmp)
+        if (.not. opened('', text, tmp, status)) return
+        call close_output('', text, tmp, status)
         if (len(svg_path) > 0) then
-            status = too_long(path, run)
-            if (status /= EXIT_OK) return
-            status = open_output(svg_path, svg, tmp)
-            if (status /= EXIT_OK) return
+            if (too_long(path, run) /= EXIT_OK) then
+                status = EXIT_INPUT
+                return
+            end if
+            if (.not. opened(svg_path, svg, tmp, status)) return
             call svg_run(run, tool, 'EM-703 tape ' // path // ', tool ' // mm(tool) // ' mm', svg)
-            status = close_output(svg_path, svg, tmp)
+            call close_output(svg_path, svg, tmp, status)
             if (status /= EXIT_OK) return
         end if
         if (allocated(field_err)) then
@@ -373,23 +377,18 @@ contains
         type(text_t) :: text
         character(len=5) :: keys(NLAYERS)
         character(len=:), allocatable :: tmp
-        integer :: l, s2
+        integer :: l
         logical :: complete
         call load_job(path, job, runs, labels, tools, status, complete)
         if (.not. complete) return
         do l = 1, NLAYERS
             keys(l) = job%layers(l)%key
         end do
-        s2 = open_output(out, text, tmp)
-        if (s2 /= EXIT_OK) then
-            status = s2
-            return
-        end if
+        if (.not. opened(out, text, tmp, status)) return
         call svg_job(runs, tools, keys, 'EM-703 job ' // job%name // ': small ' // mm(tools(1)) // &
             ' mm (red), large ' // mm(tools(2)) // ' mm (blue), cond ' // mm(tools(3)) // &
             ' mm (green)', text)
-        s2 = close_output(out, text, tmp)
-        if (s2 /= EXIT_OK) status = s2
+        call close_output(out, text, tmp, status)
     end function run_svg
 
     !> em703 gcode: a tape or a job as an ISO 6983 program.
@@ -404,16 +403,11 @@ contains
         type(text_t) :: text
         character(len=:), allocatable :: tmp
         type(error_t), allocatable :: err
-        integer :: s2
         logical :: complete
         if (ends_with(path, '.job')) then
             call load_job(path, job, runs, labels, tools, status, complete)
             if (.not. complete) return
-            s2 = open_output(out, text, tmp)
-            if (s2 /= EXIT_OK) then
-                status = s2
-                return
-            end if
+            if (.not. opened(out, text, tmp, status)) return
             if (dialect == 'iso-1970s') then
                 call iso_program(runs, labels, 'EM-703 job ' // job%name // ', code ' // job%code, &
                                  chord_tol, text, err)
@@ -428,11 +422,7 @@ contains
             if (status /= EXIT_OK) return
             labels(1) = 'tape ' // path
             tools(1) = 0
-            s2 = open_output(out, text, tmp)
-            if (s2 /= EXIT_OK) then
-                status = s2
-                return
-            end if
+            if (.not. opened(out, text, tmp, status)) return
             if (dialect == 'iso-1970s') then
                 call iso_program(runs(1:1), labels(1:1), 'EM-703 tape, code ' // runs(1)%code // &
                                  ', ' // str(runs(1)%nframes) // ' frames', chord_tol, text, err)
@@ -447,8 +437,7 @@ contains
             text%message = 'abandoned'
             status = EXIT_INPUT
         end if
-        s2 = close_output(out, text, tmp)
-        if (s2 /= EXIT_OK) status = s2
+        call close_output(out, text, tmp, status)
     end function run_gcode
 
     !> em703 gerber: the tapes of a job as one RS-274X image.
@@ -460,7 +449,7 @@ contains
         integer(int64) :: tools(NLAYERS)
         type(text_t) :: text
         character(len=:), allocatable :: tmp
-        integer :: l, s2
+        integer :: l
         logical :: complete
         call load_job(path, job, runs, labels, tools, status, complete)
         if (.not. complete) return
@@ -473,15 +462,10 @@ contains
                 return
             end if
         end do
-        s2 = open_output(out, text, tmp)
-        if (s2 /= EXIT_OK) then
-            status = s2
-            return
-        end if
+        if (.not. opened(out, text, tmp, status)) return
         call gerber_image(runs, labels, tools, 'EM-703 job ' // job%name // ', code ' // &
                           job%code, text)
-        s2 = close_output(out, text, tmp)
-        if (s2 /= EXIT_OK) status = s2
+        call close_output(out, text, tmp, status)
     end function run_gerber
 
     !> em703 drill: the pads of a job's pad tapes as an Excellon drill file.
@@ -494,7 +478,7 @@ contains
         type(text_t) :: text
         type(hole_t), allocatable :: holes(:)
         character(len=:), allocatable :: tmp
-        integer :: l, n, s2
+        integer :: l, n
         logical :: complete
         call load_job(path, job, runs, labels, tools, status, complete)
         if (.not. complete) return
@@ -504,15 +488,10 @@ contains
             if (job%layers(l)%key == 'cond') cycle
             call find_holes(runs(l), tools(l), holes, n)
         end do
-        s2 = open_output(out, text, tmp)
-        if (s2 /= EXIT_OK) then
-            status = s2
-            return
-        end if
+        if (.not. opened(out, text, tmp, status)) return
         call drill_program(holes(1:n), 'EM-703 job ' // job%name // ': ' // str(n) // &
                            ' holes of the small- and large-pad tapes', text)
-        s2 = close_output(out, text, tmp)
-        if (s2 /= EXIT_OK) status = s2
+        call close_output(out, text, tmp, status)
     end function run_drill
 
     !> em703 html: one page that runs the tapes of a job on an animated
@@ -526,7 +505,7 @@ contains
         type(error_t), allocatable :: err
         type(text_t) :: text
         character(len=:), allocatable :: tmp
-        integer :: l, s2
+        integer :: l
         call read_job(path, job, err)
         if (allocated(err)) then
             call say(error_text(err))
@@ -539,11 +518,9 @@ contains
             call load_run(job%layers(l)%path, job%code, runs(l), status, job%layers(l), path)
             if (status /= EXIT_OK) return
         end do
-        status = open_output(out, text, tmp)
-        if (status /= EXIT_OK) return
+        if (.not. opened(out, text, tmp, status)) return
         call html_job(job, runs, text)
-        s2 = close_output(out, text, tmp)
-        if (s2 /= EXIT_OK) status = s2
+        call close_output(out, text, tmp, status)
     end function run_html
 
     ! ------------------------------------------------------------------
@@ -591,7 +568,6 @@ contains
         character(len=:), allocatable :: bytes, c, tmp
         type(error_t), allocatable :: err
         type(text_t) :: text
-        integer :: s2
         call read_tape(path, bytes, status)
         if (status /= EXIT_OK) return
         c = code
@@ -603,9 +579,9 @@ contains
             status = EXIT_INPUT
             return
         end if
-        s2 = open_output('', text, tmp)
+        if (.not. opened('', text, tmp, status)) return
         call view_tape(bytes, c, first, last, text)
-        status = close_output('', text, tmp)
+        call close_output('', text, tmp, status)
     end function run_view
 
     ! ------------------------------------------------------------------
@@ -620,7 +596,7 @@ contains
         logical :: ok
         type(text_t) :: text
         character(len=:), allocatable :: tmp, line
-        integer :: s2
+        status = EXIT_OK
         if (present(equal)) then
             if (equal) then
                 call split_equal(dx, dy, max_pulses, fx, fy, n, lx, ly, dev, ok)
@@ -630,7 +606,7 @@ contains
                     status = EXIT_INPUT
                     return
                 end if
-                s2 = open_output('', text, tmp)
+                if (.not. opened('', text, tmp, status)) return
                 do k = 1, n
                     call text%add(str(fx) // ' ' // str(fy))
                 end do
@@ -645,17 +621,17 @@ contains
                 if (lx /= 0 .or. ly /= 0) line = line // ', the last ' // str(lx) // ' ' // str(ly)
                 call text%add(line // '; largest distance of a division point from the line ' // &
                               fixed(dev, 6) // ' pulses')
-                status = close_output('', text, tmp)
+                call close_output('', text, tmp, status)
                 return
             end if
         end if
-        s2 = open_output('', text, tmp)
+        if (.not. opened('', text, tmp, status)) return
         n = frames_needed(dx, dy, max_pulses)
         do k = 1, n
             call split_frame(dx, dy, k, n, fx, fy)
             call text%add(str(fx) // ' ' // str(fy))
         end do
-        status = close_output('', text, tmp)
+        call close_output('', text, tmp, status)
     end function run_split
 
     ! ------------------------------------------------------------------
@@ -666,7 +642,7 @@ contains
         character(len=*), intent(in) :: path
         character(len=:), allocatable :: bytes, prog, tmp, lines
         type(text_t) :: msgs, text
-        integer :: i, c, n, nerr, nprog, nblocks, s2, k, j
+        integer :: i, c, n, nerr, nprog, nblocks, k, j
         logical :: tape
         call read_tape(path, bytes, status)
         if (status /= EXIT_OK) return
@@ -707,11 +683,11 @@ contains
             status = EXIT_INPUT
             return
         end if
-        s2 = open_output('', text, tmp)
+        if (.not. opened('', text, tmp, status)) return
         call text%add(path // ': ' // str(nprog) // trim(merge(' program, ', ' programs,', &
             nprog == 1)) // ' ' // str(nblocks) // trim(merge(' block, ', ' blocks,', nblocks == 1)) // &
             ' no tape error')
-        status = close_output('', text, tmp)
+        call close_output('', text, tmp, status)
     end function run_check
 
 end module em703_commands
