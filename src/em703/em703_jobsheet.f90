@@ -14,6 +14,8 @@ module em703_jobsheet
     public :: job_t, layer_t, read_job, parse_scale, machine_scale, LAYER_KEYS, NLAYERS
 
     integer, parameter :: NLAYERS = 3
+    !> The widest tool a job sheet may name, 0.01 mm: the field's 1 200 mm.
+    integer(int64), parameter :: MAX_TOOL = 120000
     character(len=5), parameter :: LAYER_KEYS(NLAYERS) = ['small', 'large', 'cond ']
 
     !> One tape of a job: its key, the file as named and as a path, its tool.
@@ -129,8 +131,9 @@ contains
                         seen_tape(l) = .true.
                     else if (key == trim(LAYER_KEYS(l)) // '.tool_mm') then
                         call parse_mm(value, v, ok)
-                        if (.not. ok .or. v <= 0) then
-                            call fail(key // ' must be a tool width in mm (> 0, two decimals), ' // &
+                        if (.not. ok .or. v <= 0 .or. v > MAX_TOOL) then
+                            call fail(key // ' must be a tool width in mm (above 0, at most ' // &
+                                      '1200.00, the field; two decimals), ' // &
                                       'not "' // value // '"')
                             return
                         end if

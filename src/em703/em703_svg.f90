@@ -81,10 +81,10 @@ contains
         real(real64), parameter :: mult(3) = [1, 2, 5]
         extent = max(box(2) - box(1), box(4) - box(3), 1.0_real64)
         g = tool_mm / 2 + max(1.0_real64, 0.05_real64 * extent)
-        x0 = floor(box(1) - g)
-        x1 = ceiling(box(2) + g)
-        y0 = floor(box(3) - g)
-        y1 = ceiling(box(4) + g)
+        x0 = real(floor(box(1) - g, int64), real64)
+        x1 = real(ceiling(box(2) + g, int64), real64)
+        y0 = real(floor(box(3) - g, int64), real64)
+        y1 = real(ceiling(box(4) + g, int64), real64)
         extent = max(x1 - x0, y1 - y0)
         thin = max(extent / 1500, 0.01_real64)
         ! 1, 2, 5, 10, 20, 50 ... mm: the finest step with at most 120 lines

@@ -116,6 +116,16 @@ def test_a_bad_job_sheet_is_status_1_naming_the_line(em703_exe, example_jobs, tm
     no_tool.write_text("\n".join(l for l in lines if not l.startswith("cond.tool_mm")) + "\n")
     line = one_line(run(em703_exe, "gerber", no_tool, check=1))
     assert line == f'{no_tool}: the job sheet has no "cond.tool_mm = ..." line'
+    for width in ("0.00", "1200.01", "99999999999999.00"):
+        wide = tmp_path / "wide.job"
+        wide.write_text("\n".join(f"cond.tool_mm = {width}" if l.startswith("cond.tool_mm")
+                                  else l for l in lines) + "\n")
+        number = next(k for k, l in enumerate(lines, 1) if l.startswith("cond.tool_mm"))
+        for sub in ("svg", "gcode", "gerber", "drill", "html"):
+            line = one_line(run(em703_exe, sub, wide, check=1))
+            assert line == (f"{wide}: line {number}: cond.tool_mm must be a tool width in mm "
+                            f"(above 0, at most 1200.00, the field; two decimals), "
+                            f'not "{width}"')
     gone = tmp_path / "gone.job"
     gone.write_text(job.read_text())
     (tmp_path / keys_of(job)["large.tape"]).unlink()
