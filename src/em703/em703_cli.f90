@@ -375,8 +375,8 @@ contains
             '              previous block''s value); each frame is read into the', &
             '              address block it stands for, then checked as above', &
             '', &
-            'Exit status: 0 no fault, 1 faults (or a parity error on the tape), 2 usage', &
-            'or I/O error.'])
+            'Exit status: 0 no fault, 1 faults (or a row of the tape in neither code:', &
+            'a parity error, or no EIA character), 2 usage or I/O error.'])
         case ('list')
             call put([character(len=78) :: &
             'usage: em703 list TAPE [--utf8] [--code 8|K|auto] [--bare]', &
