@@ -77,7 +77,7 @@ module em703_iso
     integer, parameter, public :: SLOT_WIDTH(NSLOTS) = [3, 2, 2, 7, 7, 7, 7, 7, 2, 2, 2]
     !> The length of a fixed frame, the end of block aside.
     integer, parameter, public :: FIXED_LENGTH = sum(SLOT_WIDTH)
-    integer, parameter :: S_N = 1, S_G1 = 2, S_G2 = 3, S_X = 4, S_J = 8, S_F = 9, S_M = 11
+    integer, parameter :: S_N = 1, S_G1 = 2, S_G2 = 3, S_X = 4, S_J = 8, S_M = 11
     character(len=*), parameter :: NO_MOVE = '+000000', TAB = achar(9)
     !> The kinds of frame.
     integer, parameter, public :: FRAME_ADDRESS = 0, FRAME_FIXED = 1, FRAME_VARIABLE = 2
