@@ -20,7 +20,7 @@ program em703
     case ('svg')
         status = run_svg(c%file, c%out)
     case ('gcode')
-        status = run_gcode(c%file, c%chord_tol, c%use_z, c%dialect, c%out)
+        status = run_gcode(c%file, c%chord_tol, c%use_z, c%dialect, c%out, c%frame)
     case ('gerber')
         status = run_gerber(c%file, c%out)
     case ('drill')
@@ -34,7 +34,7 @@ program em703
     case ('split')
         status = run_split(c%move(1), c%move(2), c%max_pulses, c%equal)
     case ('check')
-        status = run_check(c%file)
+        status = run_check(c%file, c%frame)
     case default
         status = 2          ! parse_command_line accepts no other subcommand
     end select

@@ -36,6 +36,8 @@ module em703_cli
         logical :: bare = .false.                   !< list --bare
         logical :: use_z = .false.                  !< gcode --z
         character(len=:), allocatable :: dialect    !< gcode --dialect linuxcnc|grbl|iso-1970s
+        !> gcode (iso-1970s) and check --frame address|fixed|variable ('' = not given)
+        character(len=:), allocatable :: frame
         integer :: num = 1, den = 1                 !< sim --scale N:D
         integer(int64) :: start_x = 0, start_y = 0  !< sim --start, 0.01 mm
         integer(int64) :: tool = 50                 !< sim --tool, 0.01 mm
@@ -53,18 +55,18 @@ module em703_cli
     !> The options of each subcommand, besides -h and --help.
     character(len=*), parameter :: SUBCOMMANDS(11) = [character(len=6) :: &
         'list', 'sim', 'svg', 'gcode', 'gerber', 'drill', 'punch', 'view', 'split', 'html', 'check']
-    character(len=*), parameter :: OPTIONS(11) = [character(len=40) :: &
+    character(len=*), parameter :: OPTIONS(11) = [character(len=48) :: &
         '--utf8 --bare --code', &
         '--scale --start --svg --tool --code', &
         '-o --output', &
-        '-o --output --z --chords --dialect', &
+        '-o --output --z --chords --dialect --frame', &
         '-o --output', &
         '-o --output', &
         '-o --output --code', &
         '--code --rows', &
         '--max --equal', &
         '-o --output', &
-        '']
+        '--frame']
 
 contains
 
@@ -96,6 +98,7 @@ contains
         cli%svg = ''
         cli%code = 'auto'
         cli%dialect = 'linuxcnc'
+        cli%frame = ''
         if (cli%command == 'punch') cli%code = ''
         nmove = 0
         i = 2
@@ -118,17 +121,20 @@ contains
         case ('list', 'sim', 'view')
             call need_file(cli%command, cli%file, 'TAPE')
         case ('check')
-            call need_file('check', cli%file, 'PROGRAM (a text or an ISO tape image)')
+            call need_file('check', cli%file, 'PROGRAM (a text, or an ISO or EIA tape image)')
         case ('svg', 'gerber', 'drill', 'html')
             call need_file(cli%command, cli%file, 'JOB (a job sheet NAME.job)')
         case ('gcode')
             call need_file(cli%command, cli%file, 'TAPE or JOB')
+            if (len(cli%frame) > 0 .and. cli%dialect /= 'iso-1970s') call usage_error('gcode', &
+                '--frame is for --dialect iso-1970s (seed 004''s frames), not ' // cli%dialect)
         case ('punch')
             if (len(cli%code) == 0) call usage_error('punch', 'missing --code iso|eia')
             call need_file('punch', cli%file, 'FILE (the text to punch)')
         case ('split')
             if (nmove /= 2) call usage_error('split', 'needs DX and DY, in pulses')
         end select
+        if (len(cli%frame) == 0) cli%frame = 'address'
     end subroutine parse_command_line
 
     !> True if arg is one of the blank-separated options.
@@ -166,6 +172,14 @@ contains
                 cli%dialect = v
             case default
                 call usage_error(sub, '--dialect takes linuxcnc, grbl or iso-1970s, not "' // v // '"')
+            end select
+        case ('--frame')
+            v = option_value(sub, i, nargs)
+            select case (v)
+            case ('address', 'fixed', 'variable')
+                cli%frame = v
+            case default
+                call usage_error(sub, '--frame takes address, fixed or variable, not "' // v // '"')
             end select
         case ('-o', '--output')
             cli%out = option_value(sub, i, nargs)
@@ -342,10 +356,10 @@ contains
             'Exit status: 0 done, 1 a bad job sheet or tape, 2 usage or I/O error.'])
         case ('check')
             call put([character(len=78) :: &
-            'usage: em703 check PROGRAM', &
+            'usage: em703 check PROGRAM [--frame address|fixed|variable]', &
             '', &
             'Reads a program of seed 004''s block format (em703 gcode --dialect', &
-            'iso-1970s), as text or punched on ISO tape (em703 punch --code iso), and', &
+            'iso-1970s), as text or punched on ISO or EIA tape (em703 punch), and', &
             'checks every block as the document''s reader would: N and three digits,', &
             'increasing; the words in the order N G X Y Z I J K F S T M; dimensions', &
             'a sign and six digits, G M F S T two digits; M codes of the document''s', &
@@ -354,8 +368,15 @@ contains
             'M03-M05, M06, M38-M40). Prints "FILE: P programs, B blocks, no tape', &
             'error", or a line "FILE: block Nnnn (line L): ..." for each fault.', &
             '', &
-            'Exit status: 0 no fault, 1 faults (or a parity error on the tape), 2 usage', &
-            'or I/O error.'])
+            '  --frame F   the document''s kind of frame: address (default, the words', &
+            '              with their letters), fixed (the slots N G G X Y Z I J F T M', &
+            '              at their columns, 48 characters) or variable (the same', &
+            '              slots, a TAB before each after N, an empty slot the', &
+            '              previous block''s value); each frame is read into the', &
+            '              address block it stands for, then checked as above', &
+            '', &
+            'Exit status: 0 no fault, 1 faults (or a row of the tape in neither code:', &
+            'a parity error, or no EIA character), 2 usage or I/O error.'])
         case ('list')
             call put([character(len=78) :: &
             'usage: em703 list TAPE [--utf8] [--code 8|K|auto] [--bare]', &
@@ -408,7 +429,7 @@ contains
         case ('gcode')
             call put([character(len=78) :: &
             'usage: em703 gcode TAPE|JOB [--dialect linuxcnc|grbl|iso-1970s] [--chords TOL]', &
-            '                            [--z] [-o FILE]', &
+            '                            [--z] [--frame address|fixed|variable] [-o FILE]', &
             '', &
             'Translates a tape (or the three tapes of a job sheet NAME.job, each after', &
             'a tool change T1..T3 M06) to an ISO 6983 program: %, N numbers, G21 G90,', &
@@ -422,6 +443,12 @@ contains
             '                at most 999 blocks a program, G two digits, increments', &
             '                X+023100 in 0.001 mm, F two-digit codes of 1.12**F mm/min,', &
             '                T01 M06, the tool as Z moves; see em703 check)', &
+            '  --frame F     iso-1970s only, the document''s kind of frame: address', &
+            '                (default, as above), fixed (no letters: the slots', &
+            '                N G G X Y Z I J F T M at fixed columns, 48 characters', &
+            '                every block) or variable (the same slots, a TAB before', &
+            '                each after N, a value unchanged since the block before', &
+            '                left out, the block ending after its last value)', &
             '  --chords TOL  arcs as chords for line-only machines, step angle', &
             '                2 arccos(1 - TOL/R), never more than TOL mm off the arc', &
             '  --z           tool down / up as Z moves (G01 Z0.000 / G00 Z1.000)', &
@@ -492,7 +519,7 @@ contains
             '                                       run it on the coordinatograph', &
             '  svg JOB [-o FILE]                    draw the tapes of a job sheet', &
             '  gcode TAPE|JOB [--dialect linuxcnc|grbl|iso-1970s] [--chords TOL] [--z]', &
-            '                 [-o FILE]', &
+            '                 [--frame address|fixed|variable] [-o FILE]', &
             '                                       ISO 6983 G-code', &
             '  gerber JOB [-o FILE]                 Gerber RS-274X', &
             '  drill JOB [-o FILE]                  Excellon: a hit per pad, tour order', &
@@ -500,7 +527,7 @@ contains
             '  view TAPE                            a picture of a punched tape', &
             '  html JOB [-o FILE]                   the job on an animated machine', &
             '  split [--max N] [--equal] DX DY      a long move split into frames', &
-            '  check PROGRAM                        seed 004''s reader: tape errors', &
+            '  check PROGRAM [--frame F]            seed 004''s reader: tape errors', &
             '  --version                            the version', &
             '', &
             'Exit status: 0 done, 1 the input had errors, 2 usage or I/O error.'])

@@ -9,7 +9,7 @@ module em703_commands
     use base_io, only: read_text, write_bytes, say
     use base_files, only: same_file, open_out, close_out, commit_file
     use base_sha256, only: sha256_hex
-    use base_text, only: text_t, str, fixed, mm, ends_with
+    use base_text, only: text_t, str, fixed, mm, ends_with, octal
     use em703_codec, only: frame_t, decoder_t, decoder_start, next_frame, frame_text
     use em703_sim, only: run_t, simulate_image, field_check, shift_run, MAX_DRAWN
     use em703_jobsheet, only: job_t, layer_t, read_job, NLAYERS
@@ -17,11 +17,11 @@ module em703_commands
     use em703_gcode, only: gcode_program
     use em703_gerber, only: gerber_image
     use em703_drill, only: hole_t, find_holes, drill_program
-    use em703_punch, only: punch_text
+    use em703_punch, only: punch_text, eia_char
     use em703_view, only: view_tape, guess_code
     use em703_split, only: frames_needed, split_frame, split_equal
     use em703_html, only: html_job
-    use em703_iso, only: iso_program, iso_check
+    use em703_iso, only: iso_program, iso_check, frame_kind
     implicit none
     private
     public :: run_list, run_sim, run_svg, run_gcode, run_gerber, run_drill, run_punch, run_view, &
@@ -391,9 +391,10 @@ contains
         call close_output(out, text, tmp, status)
     end function run_svg
 
-    !> em703 gcode: a tape or a job as an ISO 6983 program.
-    integer function run_gcode(path, chord_tol, use_z, dialect, out) result(status)
-        character(len=*), intent(in) :: path, dialect, out
+    !> em703 gcode: a tape or a job as an ISO 6983 program; frame: the kind
+    !> of frame of dialect iso-1970s ("address", "fixed", "variable").
+    integer function run_gcode(path, chord_tol, use_z, dialect, out, frame) result(status)
+        character(len=*), intent(in) :: path, dialect, out, frame
         real(real64), intent(in) :: chord_tol
         logical, intent(in) :: use_z
         type(job_t) :: job
@@ -410,7 +411,7 @@ contains
             if (.not. opened(out, text, tmp, status)) return
             if (dialect == 'iso-1970s') then
                 call iso_program(runs, labels, 'EM-703 job ' // job%name // ', code ' // job%code, &
-                                 chord_tol, text, err)
+                                 chord_tol, text, err, frame_kind(frame))
             else
                 call gcode_program(runs, labels, tools, 'EM-703 job ' // job%name // ', code ' // &
                                    job%code, chord_tol, use_z, text, dialect)
@@ -425,7 +426,8 @@ contains
             if (.not. opened(out, text, tmp, status)) return
             if (dialect == 'iso-1970s') then
                 call iso_program(runs(1:1), labels(1:1), 'EM-703 tape, code ' // runs(1)%code // &
-                                 ', ' // str(runs(1)%nframes) // ' frames', chord_tol, text, err)
+                                 ', ' // str(runs(1)%nframes) // ' frames', chord_tol, text, err, &
+                                 frame_kind(frame))
             else
                 call gcode_program(runs(1:1), labels(1:1), tools(1:1), 'EM-703 tape, code ' // &
                                    runs(1)%code // ', ' // str(runs(1)%nframes) // ' frames', &
@@ -635,34 +637,63 @@ contains
     end function run_split
 
     ! ------------------------------------------------------------------
-    !> em703 check: a program of seed 004's block format, as text or as an
-    !> ISO tape image (every row with an even number of holes; blank rows
-    !> skipped, track 8 dropped), checked block by block (em703_iso).
-    integer function run_check(path) result(status)
-        character(len=*), intent(in) :: path
+    !> em703 check: a program of seed 004's block format in frames of kind
+    !> frame ("address", "fixed", "variable"), as text or as a tape image
+    !> (a byte 0 or above 127): ISO when most punched rows have an even
+    !> number of holes (track 8 dropped), else EIA (read back to ASCII, the
+    !> letters upper case); blank rows skipped, a row of the wrong parity or
+    !> no EIA code an error. Checked block by block (em703_iso).
+    integer function run_check(path, frame) result(status)
+        character(len=*), intent(in) :: path, frame
         character(len=:), allocatable :: bytes, prog, tmp, lines
         type(text_t) :: msgs, text
-        integer :: i, c, n, nerr, nprog, nblocks, k, j
-        logical :: tape
+        integer :: i, c, n, nerr, nprog, nblocks, k, j, even, odd
+        logical :: tape, eia
         call read_tape(path, bytes, status)
         if (status /= EXIT_OK) return
         tape = .false.
+        even = 0
+        odd = 0
         do i = 1, len(bytes)
             c = iachar(bytes(i:i))
             if (c == 0 .or. c > 127) tape = .true.
+            if (c == 0) cycle
+            if (mod(popcnt(c), 2) == 0) then
+                even = even + 1
+            else
+                odd = odd + 1
+            end if
         end do
+        eia = odd > even
         if (tape) then
             allocate(character(len=len(bytes)) :: prog)
             n = 0
             do i = 1, len(bytes)
                 c = iachar(bytes(i:i))
-                if (mod(popcnt(c), 2) == 1) then
-                    call say(path // ': row ' // str(i) // ': parity error (odd number of ' // &
-                             'holes): not an ISO tape, or a misread row')
-                    status = EXIT_INPUT
-                    return
-                end if
                 if (c == 0) cycle
+                if (eia) then
+                    if (mod(popcnt(c), 2) == 0) then
+                        call say(path // ': row ' // str(i) // ': parity error (even number of ' // &
+                                 'holes): not an EIA tape, or a misread row')
+                        status = EXIT_INPUT
+                        return
+                    end if
+                    c = eia_char(c)
+                    if (c < 0) then
+                        call say(path // ': row ' // str(i) // ': octal ' // &
+                                 octal(iachar(bytes(i:i)), 3) // ' is no EIA RS-244 code: not an ' // &
+                                 'EIA tape, or a misread row')
+                        status = EXIT_INPUT
+                        return
+                    end if
+                else
+                    if (mod(popcnt(c), 2) == 1) then
+                        call say(path // ': row ' // str(i) // ': parity error (odd number of ' // &
+                                 'holes): not an ISO tape, or a misread row')
+                        status = EXIT_INPUT
+                        return
+                    end if
+                end if
                 n = n + 1
                 prog(n:n) = achar(iand(c, 127))
             end do
@@ -670,7 +701,7 @@ contains
         else
             prog = bytes
         end if
-        call iso_check(prog, msgs, nerr, nprog, nblocks)
+        call iso_check(prog, msgs, nerr, nprog, nblocks, frame_kind(frame))
         if (nerr > 0) then
             lines = msgs%value()
             k = 1

@@ -29,6 +29,26 @@
 !> so G45 has one: G40), G60-G79, G80-G99. The M groups are ours, from the
 !> table: program (M00, M02), spindle (M03, M04, M05), tool change (M06),
 !> speed range (M38, M39, M40); an M code outside the table is an error too.
+!>
+!> The document's three kinds of frame ("фиксированный", "переменный",
+!> "адресный кадр"). The address frame is the block above, each word with
+!> its letter. The fixed and the variable frame carry the same words without
+!> letters, in a fixed order of eleven slots (SLOT_NAME, SLOT_WIDTH):
+!>
+!>     slot   N  G00-G09  G10-G39  X  Y  Z  I  J  F  T  M
+!>     width  3  2        2        7  7  7  7  7  2  2  2
+!>
+!> A fixed frame has every slot every block, 48 characters and the end of
+!> block, whatever it carries: X Y Z I J the increment (+000000 for none),
+!> the G slots, F and T the code in force (carried from the block that set
+!> it), M the block's own M code; a slot with nothing in force (a G or F
+!> before the first of the program, T before a tool change, M in a block
+!> without one) is spaces of its width, so that the reader still finds
+!> every slot by its position. A variable frame has the same slots, a TAB
+!> (HT) before each slot after N; a slot whose value is the previous block's
+!> is empty (its TAB stays), and the frame ends after its last slot that is
+!> not empty. Each program (from its %) starts from nothing in force and no
+!> move. The reader's check reads all three (iso_check's frame).
 module em703_iso
     use, intrinsic :: iso_fortran_env, only: int64, real64
     use em703_sim, only: run_t, seg_t, walker_t, walk_start, next_seg, SEG_LINE, SEG_TRAVEL, &
@@ -39,7 +59,7 @@ module em703_iso
     use base_error, only: error_t
     implicit none
     private
-    public :: iso_program, geometric_code, signed_digits, iso_check, g_group, m_group
+    public :: iso_program, geometric_code, signed_digits, iso_check, g_group, m_group, frame_kind
 
     !> Blocks of one program (three digits).
     integer, parameter, public :: ISO_BLOCKS = 999
@@ -50,6 +70,18 @@ module em703_iso
     integer, parameter :: RESERVE = 2
     character(len=*), parameter :: Z_DOWN = 'Z-001000', Z_UP = 'Z+001000'
 
+    !> The slots of the fixed and the variable frame, in order.
+    integer, parameter, public :: NSLOTS = 11
+    character(len=*), parameter, public :: SLOT_NAME(NSLOTS) = [character(len=7) :: 'N', &
+        'G00-G09', 'G10-G39', 'X', 'Y', 'Z', 'I', 'J', 'F', 'T', 'M']
+    integer, parameter, public :: SLOT_WIDTH(NSLOTS) = [3, 2, 2, 7, 7, 7, 7, 7, 2, 2, 2]
+    !> The length of a fixed frame, the end of block aside.
+    integer, parameter, public :: FIXED_LENGTH = sum(SLOT_WIDTH)
+    integer, parameter :: S_N = 1, S_G1 = 2, S_G2 = 3, S_X = 4, S_J = 8, S_M = 11
+    character(len=*), parameter :: NO_MOVE = '+000000', TAB = achar(9)
+    !> The kinds of frame.
+    integer, parameter, public :: FRAME_ADDRESS = 0, FRAME_FIXED = 1, FRAME_VARIABLE = 2
+
     type :: state_t
         integer :: n = 0                 !< last block number of this program
         integer :: part = 1              !< program number
@@ -57,9 +89,31 @@ module em703_iso
         integer :: feed = 0              !< current F code (0 = none yet)
         integer(int64) :: x = 0, y = 0   !< where the tool is, units
         character(len=:), allocatable :: title
+        integer :: frame = FRAME_ADDRESS
+        !> fixed and variable frames: the slots of this block and of the previous
+        character(len=7) :: cur(NSLOTS) = '', prev(NSLOTS) = ''
     end type state_t
 
 contains
+
+    !> The kind of frame named "address", "fixed" or "variable"; -1 for another name.
+    integer function frame_kind(name)
+        character(len=*), intent(in) :: name
+        select case (name)
+        case ('address'); frame_kind = FRAME_ADDRESS
+        case ('fixed'); frame_kind = FRAME_FIXED
+        case ('variable'); frame_kind = FRAME_VARIABLE
+        case default; frame_kind = -1
+        end select
+    end function frame_kind
+
+    !> The value of slot k when nothing is in force: no move, or spaces.
+    pure function empty_slot(k) result(v)
+        integer, intent(in) :: k
+        character(len=7) :: v
+        v = ''
+        if (k >= S_X .and. k <= S_J) v = NO_MOVE
+    end function empty_slot
 
     !> The two-digit code of a feed or speed: n with 1.12**n nearest to value
     !> on the logarithmic scale, 01 to 98 (00 is stop, 99 rapid).
@@ -97,25 +151,36 @@ contains
     end function three
 
     !> The program for one or more runs (the tapes of a job one after
-    !> another, each after T<l> M06). err: a tape that cannot be walked.
-    subroutine iso_program(runs, labels, title, chord_tol, text, err)
+    !> another, each after T<l> M06), in frames of kind frame (FRAME_ADDRESS
+    !> when absent). err: a tape that cannot be walked.
+    subroutine iso_program(runs, labels, title, chord_tol, text, err, frame)
         type(run_t), intent(in) :: runs(:)
         character(len=*), intent(in) :: labels(:)
         character(len=*), intent(in) :: title
         real(real64), intent(in) :: chord_tol
         type(text_t), intent(inout) :: text
         type(error_t), allocatable, intent(out) :: err
+        integer, intent(in), optional :: frame
         type(state_t) :: st
         type(walker_t) :: w
         type(seg_t) :: s
         logical :: got
         integer :: l
         st%title = title
+        if (present(frame)) st%frame = frame
         call text%add('%')
         call comment(text, title // ', block format of seed 004, increments in 0.001 mm')
         call comment(text, 'lines F' // two(geometric_code(LINE_SPEED)) // ', arcs F' // &
             two(geometric_code(ARC_SPEED)) // ', F the code of 1.12 to the power F mm/min, tool ' // &
             'down ' // Z_DOWN // ', up ' // Z_UP)
+        select case (st%frame)
+        case (FRAME_FIXED)
+            call comment(text, 'fixed frames of ' // str(FIXED_LENGTH) // ' characters, no ' // &
+                'letters, the slots N G G X Y Z I J F T M, every slot in every frame')
+        case (FRAME_VARIABLE)
+            call comment(text, 'variable frames, no letters, the slots N G G X Y Z I J F T M ' // &
+                'with a TAB before each after N, an empty slot the value of the frame before')
+        end select
         call block(st, text, 'G17')
         do l = 1, size(runs)
             call comment(text, trim(labels(l)))
@@ -165,8 +230,67 @@ contains
         type(text_t), intent(inout) :: text
         character(len=*), intent(in) :: words
         st%n = st%n + 1
-        call text%add('N' // three(st%n) // ' ' // words)
+        if (st%frame == FRAME_ADDRESS) then
+            call text%add('N' // three(st%n) // ' ' // words)
+        else
+            call slotted(st, text, words)
+        end if
     end subroutine numbered
+
+    !> The block N<st%n> words (address words of this module, one space
+    !> between) as a fixed or a variable frame.
+    subroutine slotted(st, text, words)
+        type(state_t), intent(inout) :: st
+        type(text_t), intent(inout) :: text
+        character(len=*), intent(in) :: words
+        character(len=:), allocatable :: line
+        integer :: k, p, q, last
+        if (st%n == 1) then
+            do k = 1, NSLOTS
+                st%cur(k) = empty_slot(k)
+            end do
+            st%prev = st%cur
+        end if
+        do k = S_X, S_J
+            st%cur(k) = NO_MOVE
+        end do
+        st%cur(S_M) = ''
+        st%cur(S_N) = three(st%n)
+        p = 1
+        do while (p <= len(words))
+            q = index(words(p:), ' ')
+            q = merge(len(words), p + q - 2, q == 0)
+            st%cur(slot_of(words(p:q))) = words(p + 1:q)
+            p = q + 2
+        end do
+        if (st%frame == FRAME_FIXED) then
+            line = ''
+            do k = 1, NSLOTS
+                line = line // st%cur(k)(1:SLOT_WIDTH(k))
+            end do
+        else
+            last = 1
+            do k = 2, NSLOTS
+                if (st%cur(k) /= st%prev(k)) last = k
+            end do
+            line = st%cur(S_N)(1:SLOT_WIDTH(S_N))
+            do k = 2, last
+                line = line // TAB
+                if (st%cur(k) /= st%prev(k)) line = line // st%cur(k)(1:SLOT_WIDTH(k))
+            end do
+        end if
+        st%prev = st%cur
+        call text%add(line)
+    end subroutine slotted
+
+    !> The slot of an address word of this module (G by its group).
+    integer function slot_of(word) result(k)
+        character(len=*), intent(in) :: word
+        k = index('NGGXYZIJFTM', word(1:1))
+        if (word(1:1) == 'G') then
+            if (word(2:3) >= '10') k = S_G2
+        end if
+    end function slot_of
 
     !> End this program (tool up, M02, %) and start the next, in the state
     !> the tool was in.
@@ -308,15 +432,24 @@ contains
         end select
     end function m_group
 
-    !> Check a program of the document's block format, line by line. For
+    !> Check a program of the document's block format, line by line, its
+    !> blocks in frames of kind frame (FRAME_ADDRESS when absent). For
     !> each fault a message "block Nnnn (line L): ..." (or "line L: ...")
     !> is added to msgs (one a line); nprog, nblocks count what was read.
-    subroutine iso_check(prog, msgs, nerr, nprog, nblocks)
+    !> A fixed or a variable frame is read slot by slot (a variable frame's
+    !> empty slot is the previous block's value) into the address block it
+    !> stands for, which is then checked as an address block is.
+    subroutine iso_check(prog, msgs, nerr, nprog, nblocks, frame)
         character(len=*), intent(in) :: prog
         type(text_t), intent(inout) :: msgs
         integer, intent(out) :: nerr, nprog, nblocks
-        integer :: i, j, line, last_n
+        integer, intent(in), optional :: frame
+        integer :: i, j, line, last_n, kind
         logical :: inside
+        character(len=7) :: prev(NSLOTS)
+        kind = FRAME_ADDRESS
+        if (present(frame)) kind = frame
+        prev = ''
         nerr = 0
         nprog = 0
         nblocks = 0
@@ -332,12 +465,222 @@ contains
                 j = i + j - 1
             end if
             line = line + 1
-            call one_line(strip(prog(i:j - 1)))
+            call read_line(strip(prog(i:j - 1)))
             i = j + 1
         end do
         if (inside) call fault(0, 'the last program has no closing %')
 
     contains
+
+        !> A line in frames of kind: an address block as it is, a fixed or
+        !> variable frame as the address block it stands for.
+        subroutine read_line(s)
+            character(len=*), intent(in) :: s
+            character(len=:), allocatable :: addr
+            integer :: k
+            if (kind == FRAME_ADDRESS .or. len(s) == 0 .or. .not. inside) then
+                call one_line(s)
+            else if (s == '%' .or. s(1:1) == '(') then
+                call one_line(s)
+            else
+                if (kind == FRAME_FIXED) then
+                    call read_fixed(s, addr)
+                else
+                    call read_variable(s, addr)
+                end if
+                if (allocated(addr)) then
+                    call one_line(addr)
+                else
+                    nblocks = nblocks + 1
+                end if
+            end if
+            if (s == '%' .and. inside) then
+                do k = 1, NSLOTS
+                    prev(k) = empty_slot(k)
+                end do
+            end if
+        end subroutine read_line
+
+        !> s for a message, a TAB shown as <TAB>.
+        function shown(s) result(t)
+            character(len=*), intent(in) :: s
+            character(len=:), allocatable :: t
+            integer :: i
+            t = ''
+            do i = 1, len(s)
+                if (s(i:i) == TAB) then
+                    t = t // '<TAB>'
+                else
+                    t = t // s(i:i)
+                end if
+            end do
+        end function shown
+
+        !> The block number of a frame for its messages (0: none readable).
+        integer function number_of(s) result(n)
+            character(len=*), intent(in) :: s
+            n = 0
+            if (len(s) >= 3) then
+                if (verify(s(1:3), '0123456789') == 0) read (s(1:3), *) n
+            end if
+        end function number_of
+
+        !> Whether v is a value of slot k: digits, a sign and digits, or
+        !> (G, F, T, M) spaces; why not in why.
+        logical function slot_ok(k, v, why) result(ok)
+            integer, intent(in) :: k
+            character(len=*), intent(in) :: v
+            character(len=:), allocatable, intent(out) :: why
+            integer :: g
+            ok = .false.
+            if (index(v, TAB) > 0) then
+                why = 'has a TAB in it'
+                return
+            end if
+            if (k >= S_X .and. k <= S_J) then
+                why = 'is not a sign and six digits'
+                if (len(v) /= 7) return
+                if (index('+-', v(1:1)) == 0 .or. verify(v(2:7), '0123456789') > 0) return
+            else if (k == S_N) then
+                why = 'is not three digits'
+                if (len(v) /= 3) return
+                if (verify(v, '0123456789') > 0) return
+            else
+                why = 'is not two digits (nor two spaces, no word)'
+                if (len(v) /= 2) return
+                if (v == '  ') then
+                    ok = .true.
+                    return
+                end if
+                if (verify(v, '0123456789') > 0) return
+                if (k == S_G1 .or. k == S_G2) then
+                    read (v, *) g
+                    if (g_group(g) /= k - S_G1 + 1) then
+                        why = 'is G' // v // ', not of ' // trim(SLOT_NAME(k)) // ', the codes ' // &
+                              'this slot takes'
+                        return
+                    end if
+                end if
+            end if
+            why = ''
+            ok = .true.
+        end function slot_ok
+
+        !> The address block of the slots v (spaces: no word).
+        function address_block(v) result(addr)
+            character(len=7), intent(in) :: v(NSLOTS)
+            character(len=:), allocatable :: addr
+            integer :: k
+            addr = 'N' // v(S_N)(1:3)
+            do k = 2, NSLOTS
+                if (len_trim(v(k)) > 0) addr = addr // ' ' // SLOT_NAME(k)(1:1) // &
+                                               v(k)(1:SLOT_WIDTH(k))
+            end do
+        end function address_block
+
+        !> A fixed frame: every slot at its columns, FIXED_LENGTH characters.
+        subroutine read_fixed(s, addr)
+            character(len=*), intent(in) :: s
+            character(len=:), allocatable, intent(out) :: addr
+            character(len=7) :: v(NSLOTS)
+            character(len=:), allocatable :: why, where, hint
+            integer :: k, c, n
+            n = number_of(s)
+            hint = ''
+            if (index(s, TAB) > 0) then
+                hint = ' (a TAB at column ' // str(index(s, TAB)) // ': a variable frame? see --frame)'
+            else if (s(1:1) == 'N') then
+                hint = ' (a letter address: an address frame? see --frame)'
+            end if
+            c = 1
+            do k = 1, NSLOTS
+                where = 'slot ' // trim(SLOT_NAME(k)) // ' (columns ' // str(c) // '-' // &
+                        str(c + SLOT_WIDTH(k) - 1) // ')'
+                if (c + SLOT_WIDTH(k) - 1 > len(s)) then
+                    call fault(n, 'a fixed frame has ' // str(FIXED_LENGTH) // ' characters, ' // &
+                        'this one ' // str(len(s)) // ': it ends in ' // where // ', which is ' // &
+                        'cut short' // hint)
+                    return
+                end if
+                if (.not. slot_ok(k, s(c:c + SLOT_WIDTH(k) - 1), why)) then
+                    if (len(s) /= FIXED_LENGTH) why = why // '; the frame has ' // str(len(s)) // &
+                        ' characters, a fixed frame ' // str(FIXED_LENGTH)
+                    call fault(n, where // ' "' // shown(s(c:c + SLOT_WIDTH(k) - 1)) // '" ' // why // hint)
+                    return
+                end if
+                v(k) = s(c:c + SLOT_WIDTH(k) - 1)
+                c = c + SLOT_WIDTH(k)
+            end do
+            if (len(s) > FIXED_LENGTH) then
+                call fault(n, 'a fixed frame has ' // str(FIXED_LENGTH) // ' characters, this ' // &
+                    'one ' // str(len(s)) // ': "' // shown(s(c:min(len(s), c + 19))) // &
+                    '" after slot M (from column ' // str(c) // ')' // hint)
+                return
+            end if
+            addr = address_block(v)
+        end subroutine read_fixed
+
+        !> A variable frame: the slots in order, a TAB before each after N, an
+        !> empty one the previous block's value, the slots after the last the
+        !> previous block's values.
+        subroutine read_variable(s, addr)
+            character(len=*), intent(in) :: s
+            character(len=:), allocatable, intent(out) :: addr
+            character(len=7) :: v(NSLOTS)
+            character(len=:), allocatable :: why, where
+            integer :: k, p, q, n
+            n = number_of(s)
+            if (s(1:1) == 'N') then
+                call fault(n, 'a variable frame begins with its number, three digits, not "' // &
+                           s(1:min(4, len(s))) // '" (a letter address: an address frame? see --frame)')
+                return
+            end if
+            v = prev
+            p = 1
+            k = 0
+            do
+                k = k + 1
+                q = index(s(p:), TAB)
+                q = merge(len(s) + 1, p + q - 1, q == 0)
+                if (k > NSLOTS) then
+                    call fault(n, 'a variable frame has at most ' // str(NSLOTS) // ' slots ' // &
+                        '(N G G X Y Z I J F T M, ' // str(NSLOTS - 1) // ' TABs), this one more: ' // &
+                        'a TAB too many (the ' // str(NSLOTS) // 'th TAB, column ' // str(p - 1) // ')')
+                    return
+                end if
+                where = 'slot ' // trim(SLOT_NAME(k)) // ' (' // trim(ordinal(k)) // ' slot, ' // &
+                        'columns ' // str(p) // '-' // str(q - 1) // ')'
+                if (q == p) then
+                    if (k == S_N) then
+                        call fault(n, 'slot N is empty: every frame begins with its number, ' // &
+                                   'three digits')
+                        return
+                    end if
+                else if (.not. slot_ok(k, s(p:q - 1), why)) then
+                    if (q - p > SLOT_WIDTH(k)) why = why // ' (' // str(q - p) // ' characters, ' // &
+                        str(SLOT_WIDTH(k)) // ' wanted: a TAB missing?)'
+                    call fault(n, where // ' "' // shown(s(p:q - 1)) // '" ' // why)
+                    return
+                else
+                    v(k) = s(p:q - 1)
+                end if
+                if (q > len(s)) exit
+                p = q + 1
+            end do
+            prev = v
+            addr = address_block(v)
+        end subroutine read_variable
+
+        function ordinal(k) result(s)
+            integer, intent(in) :: k
+            character(len=:), allocatable :: s
+            select case (k)
+            case (1); s = '1st'
+            case (2); s = '2nd'
+            case (3); s = '3rd'
+            case default; s = str(k) // 'th'
+            end select
+        end function ordinal
 
         function strip(s) result(t)
             character(len=*), intent(in) :: s
@@ -389,6 +732,11 @@ contains
                 return
             end if
             if (s(1:1) /= 'N' .or. verify(s(2:4), '0123456789') > 0) then
+                if (verify(s(1:3), '0123456789') == 0) then
+                    call fault(0, 'a block begins with N and three digits, not "' // shown(s(1:4)) // &
+                               '" (no letter: a fixed or a variable frame? see --frame)')
+                    return
+                end if
                 call fault(0, 'a block begins with N and three digits, not "' // s(1:min(4, len(s))) // '"')
                 return
             end if

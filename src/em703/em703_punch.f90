@@ -24,7 +24,7 @@ module em703_punch
     use base_text, only: octal
     implicit none
     private
-    public :: punch_text, iso_row, eia_row, iso_meaning, eia_meaning, holes
+    public :: punch_text, iso_row, eia_row, iso_meaning, eia_meaning, holes, eia_char
 
     integer, parameter, public :: LEADER = 20
     integer, parameter, public :: EIA_EOB = 128
@@ -96,6 +96,22 @@ contains
         if (base < 0) return
         if (mod(holes(base), 2) == 0) eia_row = base + TRACK5
     end function eia_row
+
+    !> The character of an EIA row read back (its ASCII code; the letters
+    !> upper case, LF for the end of block), or -1 for a row that is no EIA
+    !> code (a parity error among them).
+    integer function eia_char(v) result(c)
+        integer, intent(in) :: v
+        if (v == EIA_EOB) then
+            c = 10
+            return
+        end if
+        do c = 9, 122
+            if (c >= iachar('a') .and. c <= iachar('z')) cycle     ! the letters once
+            if (eia_row(c) == v) return
+        end do
+        c = -1
+    end function eia_char
 
     !> Punch text as a tape image in code "iso" or "eia".
     subroutine punch_text(text, code, rows, err)

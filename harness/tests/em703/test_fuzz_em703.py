@@ -191,6 +191,31 @@ def test_punch_any_bytes(em703_exe, tmp_path, text, code):
     em(em703_exe, here, "punch", "--code", code, "-o", "p.ptp", "p.txt", out="p.ptp")
 
 
+#: Pieces of seed 004's programs in all three frames, to build hostile ones from.
+PIECES = ["%\n", "\n", "\t", "\t\t\t", "001", "999", "000", "N001 ", "N", "G01", "G17 ", "01",
+          "17", "45", "+000000", "-123456", "+", "-", "  ", " ", "X+000100 ", "M06", "07", "(", ")",
+          "(a, b)\n", "\r\n", "\x00", "\x80", "\xff", "9" * 60]
+
+
+@FUZZ
+@given(text=st.one_of(st.binary(max_size=1500),
+                      st.lists(st.sampled_from(PIECES), max_size=60).map(
+                          lambda p: "".join(p).encode("latin-1"))),
+       frame=st.sampled_from(["address", "fixed", "variable"]))
+@example(text=b"%\n001\t\t\t\t\t\t\t\t\t\t\t\t\n%\n", frame="variable")
+@example(text=b"%\n001" + b"9" * 45 + b"\n%\n", frame="fixed")
+@example(text=b"%\n\t\n001\t01\t\t+\n%", frame="variable")
+def test_check_any_program(em703_exe, tmp_path, text, frame):
+    """em703 check in every frame of anything, as text and punched on either tape."""
+    here = fresh(tmp_path)
+    (here / "p.iso").write_bytes(text)
+    em(em703_exe, here, "check", "--frame", frame, "p.iso")
+    for code in ("iso", "eia"):
+        tape = f"p.{code}.ptp"
+        if em(em703_exe, here, "punch", "--code", code, "-o", tape, "p.iso", out=tape).returncode == 0:
+            em(em703_exe, here, "check", "--frame", frame, tape)
+
+
 NUMBERS = ["0", "1", "-1", "9999", "10000", "99999999", "2147483647", "2147483648",
            "-2147483648", "-2147483649", "99999999999999999999", "1e9", "1.5", "", "-", "x",
            "--max", "0x10"]
@@ -205,7 +230,8 @@ def test_split_any_numbers(em703_exe, tmp_path, args):
 WORDS = ["list", "sim", "svg", "gcode", "gerber", "punch", "view", "split", "--help", "-h",
          "-o", "--svg", "--code", "iso", "eia", "8", "K", "auto", "--scale", "1:1", "0:0",
          "--start", "1,2", "x,", "--chords", "0.01", "--rows", "5:2", "--utf8", "--bare",
-         "--z", "t.ptp", "T.job", "nothing", "", "-", "/", "\x01"]
+         "--z", "t.ptp", "T.job", "nothing", "", "-", "/", "\x01", "check", "--frame", "fixed",
+         "variable", "address", "--dialect", "iso-1970s"]
 
 
 @FUZZ
