@@ -13,10 +13,11 @@ pad of the small-pad tool's width (0.50 mm), so that each pad is punched as
 one dot at its centre.  The coordinates are scaled by a factor ``s`` (units
 of 0.01 mm per TSPLIB unit: the largest of 100, 50, 20, 10, 5, 2, 1 that
 keeps the board within 1 100 mm; 20 for every instance here but u1060, 5,
-so a coordinate with one decimal stays an exact integer; the two decimals of
-u574 and u1060 are rounded to the nearest 0.01 mm, a fortieth and a tenth of
-a TSPLIB unit at most, which moves the geometry TENZOR sees but not the
-scoring, which uses TSPLIB's coordinates).  The start point is put on node 1
+and fl1400, 50, so a coordinate with one decimal stays an exact integer; the
+two decimals of u574 and u1060 and the three of fl1400 are rounded to the
+nearest 0.01 mm, a fortieth, a tenth and a hundredth of a TSPLIB unit at
+most, which moves the geometry TENZOR sees but not the scoring, which uses
+TSPLIB's coordinates).  The start point is put on node 1
 (the deck's coordinates are relative to node 1), so TENZOR's path from the
 start point through every pad back to it is a closed tour through the nodes:
 the optimal path has the optimal tour's length.
@@ -53,7 +54,7 @@ from . import measure
 DIR = Path(__file__).resolve().parent / "tsplib"
 #: The instances of the benchmark, smallest first.
 NAMES: tuple[str, ...] = ("d198", "pcb442", "d493", "u574", "d657", "u1060", "pcb1173",
-                          "pcb3038")
+                          "d1291", "fl1400", "d2103", "pcb3038")
 FIELD = 110_000            #: the board's largest extent, units (1 100 mm)
 MARGIN = 2_000             #: units between the field's edge and the board
 PAD = 50                   #: pad diameter, units: the small-pad tool's width
