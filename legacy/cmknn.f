@@ -1,8 +1,14 @@
 C=======================================================================
 C     CMKNN  - THE NEAREST ENDS OF EVERY END, FOR 2-OPT        (SHARED)
-C     SOURCE:  RECONSTRUCTED. FOR EACH END, THE MXNB NEAREST ENDS OF
-C              OTHER ITEMS, NEAREST FIRST, IN KNB (0 WHERE THERE ARE
-C              FEWER). THE GRID HOLDS ALL ENDS.
+C     SOURCE:  RECONSTRUCTED. FOR EACH END, MXNB ENDS OF OTHER ITEMS,
+C              NEAREST FIRST, IN KNB (0 WHERE THERE ARE FEWER): THE
+C              MXQ NEAREST IN EACH OF THE FOUR QUADRANTS AROUND IT
+C              (LOOKED FOR WITHIN MXRING RINGS OF GRID CELLS), AND THE
+C              NEAREST OTHERS TO FILL THE LIST. ON A BOARD OF CLUSTERS
+C              THE NEAREST ENDS ALL LIE IN AN END'S OWN CLUSTER, AND
+C              NO MOVE COULD THEN JOIN TWO CLUSTERS BETTER; THE
+C              QUADRANTS GIVE EACH END NEIGHBOURS ON EVERY SIDE. THE
+C              GRID HOLDS ALL ENDS.
 C     NP      (INPUT)  INTEGER  NUMBER OF ENDS
 C     CHANGES: SEE THE HISTORY OF THE REPOSITORY (GIT LOG)
 C=======================================================================
@@ -31,14 +37,21 @@ C     ---- /CMTWK/ WORK SPACE OF THE TOUR: GRID, NEIGHBOURS, QUEUE -----
      2               KCEL, KSLT, KNB, KQUE, LQUE
       SAVE /CMTWK/
 C     ---- LOCAL -------------------------------------------------------
+      INTEGER MXQ, MXRING
+      PARAMETER (MXQ = 2, MXRING = 30)
       INTEGER IP, IC, ICX, ICY, K, IGX, IGY, IS, IQ, ISTEP, KMAX, N, J,
-     1        NBI(MXNB)
-      DOUBLE PRECISION D, RK, NBD(MXNB), CMRBND
+     1        NBI(MXNB), NQ(4), KQB(MXQ, 4), IQD, IDX, IDY, NF,
+     2        L, NBF(MXNB)
+      DOUBLE PRECISION D, RK, NBD(MXNB), QBD(MXQ, 4), DF(MXNB), CMRBND
+      LOGICAL LDONE
       EXTERNAL CMRBND
 C
       KMAX = MAX(NGX, NGY)
       DO 60 IP = 1, NP
          N = 0
+         DO 5 J = 1, 4
+            NQ(J) = 0
+    5    CONTINUE
          CALL CMCELL(KQX(IP), KQY(IP), IC)
          ICX = MOD(IC - 1, NGX)
          ICY = (IC - 1) / NGX
@@ -55,10 +68,6 @@ C
                      IQ = KCEL(IS)
                      D = (DBLE(KQX(IQ)) - KQX(IP))**2 +
      1                   (DBLE(KQY(IQ)) - KQY(IP))**2
-C                    A FULL LIST TAKES ONLY A NEARER END
-                     IF (N .EQ. MXNB) THEN
-                        IF (D .GT. NBD(N)) GOTO 10
-                     END IF
 C                    NOT ITSELF, NOT THE OTHER END OF ITS OWN ITEM,
 C                    AND AN ITEM WHOSE ENDS ARE ONE POINT ONLY ONCE
                      IF ((IQ + 1) / 2 .EQ. (IP + 1) / 2) GOTO 10
@@ -67,19 +76,63 @@ C                    AND AN ITEM WHOSE ENDS ARE ONE POINT ONLY ONCE
      1                      KQY(IQ) .EQ. KQY(IQ-1)) GOTO 10
                      END IF
                      CALL CMKINS(NBI, NBD, N, MXNB, IQ, D)
+C                    ITS QUADRANT: 1 RIGHT AND UP, 2 LEFT AND UP, 3 LEFT
+C                    AND DOWN, 4 RIGHT AND DOWN (AN END AT THE SAME
+C                    POINT IS IN NONE)
+                     IDX = KQX(IQ) - KQX(IP)
+                     IDY = KQY(IQ) - KQY(IP)
+                     IF (IDX .GT. 0 .AND. IDY .GE. 0) THEN
+                        IQD = 1
+                     ELSE IF (IDX .LE. 0 .AND. IDY .GT. 0) THEN
+                        IQD = 2
+                     ELSE IF (IDX .LT. 0 .AND. IDY .LE. 0) THEN
+                        IQD = 3
+                     ELSE IF (IDX .GE. 0 .AND. IDY .LT. 0) THEN
+                        IQD = 4
+                     ELSE
+                        GOTO 10
+                     END IF
+                     CALL CMKINS(KQB(1, IQD), QBD(1, IQD), NQ(IQD), MXQ,
+     1                           IQ, D)
    10             CONTINUE
    20          CONTINUE
    30       CONTINUE
+C           DONE WHEN NO END BEYOND RING K CAN ENTER A LIST: THE
+C           NEAREST ARE FOUND, AND EACH QUADRANT'S TOO, OR RING MXRING
+C           IS PASSED
             RK = CMRBND(KQX(IP), KQY(IP), ICX, ICY, K)
             IF (RK .GE. 1.0D299) GOTO 45
-            IF (N .EQ. MXNB) THEN
-               IF (NBD(N) .LE. RK * RK) GOTO 45
-            END IF
+            IF (N .LT. MXNB) GOTO 40
+            IF (NBD(N) .GT. RK * RK) GOTO 40
+            IF (K .GE. MXRING) GOTO 45
+            LDONE = .TRUE.
+            DO 35 J = 1, 4
+               IF (NQ(J) .LT. MXQ) THEN
+                  LDONE = .FALSE.
+               ELSE IF (QBD(MXQ, J) .GT. RK * RK) THEN
+                  LDONE = .FALSE.
+               END IF
+   35       CONTINUE
+            IF (LDONE) GOTO 45
    40    CONTINUE
    45    CONTINUE
+C        ---- THE LIST: THE QUADRANTS' ENDS, THEN THE NEAREST OTHERS ---
+         NF = 0
+         DO 47 J = 1, 4
+            DO 46 L = 1, NQ(J)
+               CALL CMKINS(NBF, DF, NF, MXNB, KQB(L, J), QBD(L, J))
+   46       CONTINUE
+   47    CONTINUE
+         DO 49 J = 1, N
+            IF (NF .GE. MXNB) GOTO 49
+            DO 48 L = 1, NF
+               IF (NBF(L) .EQ. NBI(J)) GOTO 49
+   48       CONTINUE
+            CALL CMKINS(NBF, DF, NF, MXNB, NBI(J), NBD(J))
+   49    CONTINUE
          DO 50 J = 1, MXNB
             KNB(J, IP) = 0
-            IF (J .LE. N) KNB(J, IP) = NBI(J)
+            IF (J .LE. NF) KNB(J, IP) = NBF(J)
    50    CONTINUE
    60 CONTINUE
       RETURN
