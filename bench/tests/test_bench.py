@@ -133,6 +133,7 @@ def test_verify_is_timed_only_on_the_boards_chosen(quick_run, tenzor_exe, tmp_pa
     assert all(r["verify_s"] == "" for r in report.read_csv(quick_run / "bench.csv"))
     status = bench_main.main(["--sizes", "100", "--dists", "uniform", "--verify-min", "100",
                               "--repeats", "1", "--min-seconds", "0", "--lkh-max", "0",
+                              "--no-tsplib",
                               "--tenzor", str(tenzor_exe), "--out", str(tmp_path)])
     assert status == 0
     (row,) = report.read_csv(tmp_path / "bench.csv")
