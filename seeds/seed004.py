@@ -55,6 +55,7 @@ from __future__ import annotations
 import argparse
 import math
 import sys
+from collections import deque
 from collections.abc import Iterator, Sequence
 from dataclasses import dataclass
 from pathlib import Path
@@ -483,8 +484,12 @@ def interpolate(dx: int, dy: int, method: str = "binary", size: int | None = Non
         raise ValueError(f"the simulation would take {volume * len(frames)} input pulses, "
                          f"more than {MOST_PULSES}; split the move with --max or give a "
                          f"smaller --size")
+    if method == "master" and volume * len(frames) + lag * abs(dx) > MOST_PULSES:
+        # the valve holds the generator lag periods for each of X's pulses
+        raise ValueError(f"the simulation would take {volume * len(frames) + lag * abs(dx)} "
+                         f"generator periods with the lag, more than {MOST_PULSES}")
     xs, ys = [0], [0]
-    pending: list[int] = []             # X pulses on their way (independent axes)
+    pending: deque[int] = deque()       # X pulses on their way (independent axes)
     for fx, fy in frames:
         px = _axis_pulses(method, abs(fx), size, fixed_ratio)
         py = _axis_pulses(method, abs(fy), size, fixed_ratio)
@@ -500,11 +505,11 @@ def interpolate(dx: int, dy: int, method: str = "binary", size: int | None = Non
                         ys.append(ys[-1])
                 continue
             pending.append(sx * a)
-            moved = pending.pop(0) if len(pending) > lag else 0
+            moved = pending.popleft() if len(pending) > lag else 0
             xs.append(xs[-1] + moved)
             ys.append(ys[-1] + sy * b)
     while pending:                       # the X drive catches up
-        xs.append(xs[-1] + pending.pop(0))
+        xs.append(xs[-1] + pending.popleft())
         ys.append(ys[-1])
     if (xs[-1], ys[-1]) != (dx, dy):
         raise AssertionError(f"interpolator ended at {(xs[-1], ys[-1])}, not {(dx, dy)}")

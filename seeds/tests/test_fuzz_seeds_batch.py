@@ -253,6 +253,8 @@ FOUND = [
     ("dda 999999999 1", None, 2, "more than 2097152"),               # 2^30 pulses
     ("dda -1957 0 --size 99999999999999999999", None, 2, "1 to 64"),  # OverflowError
     ("dda -1862 2147483648 --method integrator", None, 2, "more than 2097152"),  # 10 ** 2^32
+    # the valve held 2^31 generator periods for each of X's pulses: gigabytes
+    ("dda 3 0 --method master --lag 2147483647", None, 2, "generator periods with the lag"),
 ]
 
 
