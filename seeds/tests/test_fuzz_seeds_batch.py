@@ -223,11 +223,16 @@ def test_hostile_files(tmp_path, kind, n):
         else:
             args = [hostile.number_word(r) for _ in range(r.randint(1, 3))]
             if r.random() < 0.5:
-                args += ["--method", r.choice(["binary", "decimal", "integrator", "x"])]
+                args += ["--method", r.choice(["binary", "decimal", "integrator", "master",
+                                               "counter", "x"])]
             if r.random() < 0.3:
                 args += ["--size", hostile.number_word(r)]
             if r.random() < 0.3:
                 args += ["--max", hostile.number_word(r)]
+            if r.random() < 0.2:
+                args += ["--lag", hostile.number_word(r)]
+            if r.random() < 0.2:
+                args += ["--fixed-ratio"]
             call(["dda", *args], here, where)
     hostile.count(PROGRAM.get(kind, kind), CHUNK)
 
