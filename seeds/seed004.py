@@ -1,4 +1,4 @@
-"""Seed 004: long moves split into frames, and pulse-multiplier interpolators.
+"""Seed 004: long moves split into frames, and linear interpolators.
 
 Source: seed 004 (docs/SOURCES.md) (a Russian textbook chapter
 on NC tape codes and interpolators; OCR text, formulas and figures lost).
