@@ -1,4 +1,4 @@
-"""Seed 004: long moves split into frames, and pulse-multiplier interpolators.
+"""Seed 004: long moves split into frames, and linear interpolators.
 
 Source: seed 004 (docs/SOURCES.md) (a Russian textbook chapter
 on NC tape codes and interpolators; OCR text, formulas and figures lost).
@@ -17,7 +17,7 @@ Sections used:
   over the frames as evenly as possible", so that every division point lies
   within one pulse of the line.  Its table is :data:`DOCUMENT_TABLE`.
 
-Everything here is integer arithmetic on pulses, deterministic.  Three
+Everything here is integer arithmetic on pulses, deterministic.  These
 interpolators are simulated pulse by pulse (one input pulse of the common
 counter at a time):
 
@@ -34,6 +34,20 @@ counter at a time):
   "интерполятор на числовых интеграторах с параллельным переносом"): each
   input pulse adds the register to an accumulator; an overflow is an output
   pulse.
+* ``counter``: OUR RECONSTRUCTION of the third principle, which the document
+  only names ("интерполятор на счетчиках с переменным коэффициентом
+  деления") and does not describe: a programmable frequency divider per
+  axis.  A down-counter fed by the common generator is loaded with
+  K = floor(N/|D|) or K + 1; reaching zero it gives one output pulse and is
+  loaded again; a remainder accumulator, preset to |D| - 1, gains
+  r = N mod |D| at every load and, when it reaches |D|, loses |D| and makes
+  that period K + 1.  Output pulse i comes on generator pulse
+  ceil(i*N/|D|): the last on the N-th, so a cycle gives exactly |D|.  This
+  is, pulse for pulse, the integrator's train (after m input pulses
+  floor(m*|D|/N) pulses); the divider stores a period, the integrator an
+  accumulated phase.  ``fixed_ratio`` shows the naive divider without the
+  remainder (K fixed, each axis stopped after |D| pulses), which is why the
+  ratio must vary.
 """
 
 from __future__ import annotations
@@ -41,6 +55,7 @@ from __future__ import annotations
 import argparse
 import math
 import sys
+from collections import deque
 from collections.abc import Iterator, Sequence
 from dataclasses import dataclass
 from pathlib import Path
@@ -61,7 +76,7 @@ DOCUMENT_TABLE: tuple[tuple[int, int], ...] = (
     (9813, 8765), (9813, 8764), (9814, 8765), (9813, 8765), (9813, 8764),
     (9813, 8765), (9813, 8765), (9814, 8765), (9813, 8764), (9813, 8765))
 
-METHODS: tuple[str, ...] = ("binary", "decimal", "integrator", "master")
+METHODS: tuple[str, ...] = ("binary", "decimal", "integrator", "master", "counter")
 
 
 # ---------------------------------------------------------------------------
@@ -237,7 +252,9 @@ class Interpolation:
     ``xs``, ``ys``: the tool position after every input pulse of the common
     counter (index 0 is the start); ``deviation``: the signed distance of
     each position from the line (pulses); ``volume``: input pulses per frame
-    (the counter's volume N); ``frames``: the frames interpolated.
+    (the counter's volume N); ``frames``: the frames interpolated;
+    ``fixed_ratio``: the counter interpolator without its remainder register
+    (see :func:`counter_pulses`).
     """
 
     method: str
@@ -248,6 +265,7 @@ class Interpolation:
     xs: tuple[int, ...]
     ys: tuple[int, ...]
     deviation: tuple[float, ...]
+    fixed_ratio: bool = False
 
     @property
     def worst(self) -> int:
@@ -342,19 +360,82 @@ def integrator_pulses(value: int, volume: int) -> list[int]:
     return out
 
 
-def _axis_pulses(method: str, value: int, size: int) -> list[int]:
+def counter_pulses(value: int, volume: int, fixed_ratio: bool = False) -> list[int]:
+    """Output pulses of one axis of the counter interpolator over one cycle
+    of ``volume`` (N) generator pulses, for ``value`` (D) pulses.
+
+    OUR RECONSTRUCTION: the document names the "интерполятор на счетчиках с
+    переменным коэффициентом деления" and no more.  A presettable
+    down-counter is loaded with a division coefficient; each generator pulse
+    counts it down; at zero it gives one output pulse and is loaded again.
+    The coefficient is K = floor(N/D) or K + 1: a remainder register holds
+    r = N mod D and a remainder accumulator, preset to D - 1, gains r at
+    every load (the first at the start of the cycle); when it reaches D it
+    loses D and that load is K + 1.  The load before period i then holds
+    ceil(i*r/D) - ceil((i-1)*r/D) extra, so output pulse i comes on
+    generator pulse ceil(i*N/D) (1-based): every pulse within one generator
+    pulse after its ideal time i*N/D, the r long periods spread as evenly as
+    they can be, and the D-th pulse on the N-th generator pulse, so the
+    cycle gives exactly D pulses with nothing to stop the divider.
+
+    ``fixed_ratio``: the naive divider with no remainder register, K fixed.
+    It would give N // K pulses a cycle, more than D unless K*(D+1) > N
+    (see :func:`fixed_ratio_count`), so here each axis is stopped after its
+    D pulses (on generator pulse D*K, early) and the axes' rates are off.
+    """
+    if not 0 <= value < volume:
+        raise ValueError(f"{value} pulses do not fit a counter interpolator of volume "
+                         f"{volume}")
+    out = [0] * volume
+    if value == 0:
+        return out                       # the divider is never started
+    k, r = divmod(volume, value)
+    if fixed_ratio:
+        r = 0
+    rest = value - 1                     # the remainder accumulator
+    given = 0
+
+    def load() -> int:
+        nonlocal rest
+        rest += r
+        if rest >= value:
+            rest -= value
+            return k + 1
+        return k
+
+    count = load()
+    for m in range(volume):
+        count -= 1
+        if count == 0:
+            out[m] = 1
+            given += 1
+            if fixed_ratio and given == value:
+                break                    # the naive divider must be stopped
+            count = load()
+    return out
+
+
+def fixed_ratio_count(value: int, volume: int) -> int:
+    """Pulses a free-running divider of fixed coefficient K = floor(N/D)
+    gives in a cycle of N = ``volume`` generator pulses (0 for D = 0)."""
+    return volume // (volume // value) if value else 0
+
+
+def _axis_pulses(method: str, value: int, size: int, fixed_ratio: bool = False) -> list[int]:
     if method in ("binary", "master"):
         return binary_pulses(value, size)
     if method == "decimal":
         return decimal_pulses(value, size)
     if method == "integrator":
         return integrator_pulses(value, size)
+    if method == "counter":
+        return counter_pulses(value, size, fixed_ratio)
     raise ValueError(f"unknown method {method!r}; one of {', '.join(METHODS)}")
 
 
 def counter_size(method: str, frames: Sequence[tuple[int, int]]) -> int:
-    """The smallest counter (bits, decades, or volume for the integrator)
-    that holds every frame of ``frames``."""
+    """The smallest counter (bits, decades, or volume for the integrator
+    and the counter interpolator) that holds every frame of ``frames``."""
     big = max([max(abs(a), abs(b)) for a, b in frames] + [1])
     if method in ("binary", "master"):
         return big.bit_length()
@@ -364,11 +445,12 @@ def counter_size(method: str, frames: Sequence[tuple[int, int]]) -> int:
 
 
 def interpolate(dx: int, dy: int, method: str = "binary", size: int | None = None,
-                max_pulses: int | None = None, lag: int = 0) -> Interpolation:
+                max_pulses: int | None = None, lag: int = 0,
+                fixed_ratio: bool = False) -> Interpolation:
     """Simulate the move (dx, dy) pulse by pulse.
 
     ``size``: counter bits (binary, master), decades (decimal) or volume
-    (integrator); default the smallest that holds the frames.
+    (integrator, counter); default the smallest that holds the frames.
     ``max_pulses``: split the move first (:func:`split_move`) and
     interpolate frame after frame, as the document advises for long moves.
     ``lag``: the X drive (heavy, inertial: the document's long-travel axis
@@ -380,17 +462,21 @@ def interpolate(dx: int, dy: int, method: str = "binary", size: int | None = Non
     multiplier ("запрет"), and the master's position sensor opens it again
     once X has moved ("разрешение"), so Y waits for X.  The positions are
     recorded once a generator period.
+    ``fixed_ratio``: only with ``counter``, its naive divider
+    (:func:`counter_pulses`).
     """
     if (dx, dy) == (0, 0):
         raise ValueError("a move of (0, 0) has nothing to interpolate")
     if lag < 0:
         raise ValueError(f"the lag is a number of generator periods, not {lag}")
+    if fixed_ratio and method != "counter":
+        raise ValueError(f"a fixed ratio is the counter interpolator's, not the {method}'s")
     frames = split_move(dx, dy, max_pulses) if max_pulses else [(dx, dy)]
     if size is None:
         size = counter_size(method, frames)
-    if method != "integrator" and not 1 <= size <= 64:
+    if method not in ("integrator", "counter") and not 1 <= size <= 64:
         raise ValueError(f"the counter size must be 1 to 64 (bits or decades), not {size}")
-    # (not a dict of the three: that would compute 10 ** size for an integrator's
+    # (not a dict of the methods: that would compute 10 ** size for an integrator's
     # volume of 2^32, which takes minutes)
     volume = (1 << size if method in ("binary", "master") else 10 ** size if method == "decimal"
               else size)
@@ -398,11 +484,15 @@ def interpolate(dx: int, dy: int, method: str = "binary", size: int | None = Non
         raise ValueError(f"the simulation would take {volume * len(frames)} input pulses, "
                          f"more than {MOST_PULSES}; split the move with --max or give a "
                          f"smaller --size")
+    if method == "master" and volume * len(frames) + lag * abs(dx) > MOST_PULSES:
+        # the valve holds the generator lag periods for each of X's pulses
+        raise ValueError(f"the simulation would take {volume * len(frames) + lag * abs(dx)} "
+                         f"generator periods with the lag, more than {MOST_PULSES}")
     xs, ys = [0], [0]
-    pending: list[int] = []             # X pulses on their way (independent axes)
+    pending: deque[int] = deque()       # X pulses on their way (independent axes)
     for fx, fy in frames:
-        px = _axis_pulses(method, abs(fx), size)
-        py = _axis_pulses(method, abs(fy), size)
+        px = _axis_pulses(method, abs(fx), size, fixed_ratio)
+        py = _axis_pulses(method, abs(fy), size, fixed_ratio)
         sx, sy = _sign(fx), _sign(fy)
         for a, b in zip(px, py):
             if method == "master":
@@ -415,16 +505,17 @@ def interpolate(dx: int, dy: int, method: str = "binary", size: int | None = Non
                         ys.append(ys[-1])
                 continue
             pending.append(sx * a)
-            moved = pending.pop(0) if len(pending) > lag else 0
+            moved = pending.popleft() if len(pending) > lag else 0
             xs.append(xs[-1] + moved)
             ys.append(ys[-1] + sy * b)
     while pending:                       # the X drive catches up
-        xs.append(xs[-1] + pending.pop(0))
+        xs.append(xs[-1] + pending.popleft())
         ys.append(ys[-1])
     if (xs[-1], ys[-1]) != (dx, dy):
         raise AssertionError(f"interpolator ended at {(xs[-1], ys[-1])}, not {(dx, dy)}")
     dev = tuple(line_distance(x, y, dx, dy) for x, y in zip(xs, ys))
-    return Interpolation(method, dx, dy, volume, tuple(frames), tuple(xs), tuple(ys), dev)
+    return Interpolation(method, dx, dy, volume, tuple(frames), tuple(xs), tuple(ys), dev,
+                         fixed_ratio)
 
 
 def binary_bound(dx: int, dy: int) -> float:
@@ -447,16 +538,32 @@ def summary(run: Interpolation) -> str:
     prints)."""
     i = run.worst
     unit = {"binary": "bits", "master": "bits", "decimal": "decades",
-            "integrator": "volume"}[run.method]
+            "integrator": "volume", "counter": "volume"}[run.method]
     size = {"binary": run.volume.bit_length() - 1, "master": run.volume.bit_length() - 1,
             "decimal": len(str(run.volume)) - 1}.get(run.method, run.volume)
-    lines = [f"move DX {run.dx} DY {run.dy} pulses, {run.method} interpolator, "
+    name = "counter (fixed ratio)" if run.fixed_ratio else run.method
+    lines = [f"move DX {run.dx} DY {run.dy} pulses, {name} interpolator, "
              f"{unit} {size}, {run.volume} input pulses per frame, "
              f"{len(run.frames)} frame{'s' if len(run.frames) != 1 else ''}",
              f"largest deviation from the line: {run.deviation[i]:+.3f} pulses "
              f"at input pulse {i} (x {run.xs[i]}, y {run.ys[i]})"]
     if run.method == "binary" and len(run.frames) == 1:
         lines.append(f"bound (popcount rule): {binary_bound(run.dx, run.dy):.3f} pulses")
+    if run.method == "counter":
+        lines.append("(our reconstruction of the document's named-only interpolator on "
+                     "counters with a variable division ratio)")
+    if run.method == "counter" and len(run.frames) == 1:
+        parts = []
+        for axis, d in (("X", abs(run.dx)), ("Y", abs(run.dy))):
+            if d:
+                k, r = divmod(run.volume, d)
+                parts.append(f"{axis} K {k}" + ("" if run.fixed_ratio else f" r {r}"))
+        lines.append("division coefficients: " + ", ".join(parts))
+    if run.fixed_ratio:
+        extra = [sum(fixed_ratio_count(abs(f[a]), run.volume) - abs(f[a]) for f in run.frames)
+                 for a in (0, 1)]
+        lines.append(f"free-running, the fixed ratio would give X {extra[0]} and Y {extra[1]} "
+                     f"pulses too many; each axis was stopped after its own")
     return "\n".join(lines) + "\n"
 
 
@@ -597,7 +704,8 @@ def add_split(sub: argparse._SubParsersAction) -> None:
 
 def _run_dda(args: argparse.Namespace) -> int:
     try:
-        run = interpolate(args.dx, args.dy, args.method, args.size, args.max, args.lag)
+        run = interpolate(args.dx, args.dy, args.method, args.size, args.max, args.lag,
+                          args.fixed_ratio)
     except ValueError as exc:
         print(f"dda: {exc}", file=sys.stderr)
         return 2
@@ -612,27 +720,41 @@ def _run_dda(args: argparse.Namespace) -> int:
 
 
 def add_dda(sub: argparse._SubParsersAction) -> None:
-    """``dda DX DY [--method M] [--size S] [--max N] [--plot FILE.svg]``."""
+    """``dda DX DY [--method M] [--size S] [--max N] [--lag L] [--fixed-ratio]
+    [--plot FILE.svg]``."""
     p = sub.add_parser(
-        "dda", help="simulate a pulse-multiplier linear interpolator (seed 004)",
+        "dda", help="simulate a linear interpolator pulse by pulse (seed 004)",
         description="Simulate a linear interpolator pulse by pulse on a move of DX, DY "
                     "pulses and print its largest deviation from the line: the "
                     "document's binary pulse multiplier (default), a decimal one whose "
-                    "register digits are in the 5121 code, or a DDA integrator.")
+                    "register digits are in the 5121 code, a DDA integrator, the "
+                    "interpolator with a master coordinate, or the interpolator on "
+                    "counters with a variable division ratio, which the document only "
+                    "names: the counter method is our reconstruction (a programmable "
+                    "divider per axis).")
     p.add_argument("dx", type=int, metavar="DX")
     p.add_argument("dy", type=int, metavar="DY")
     p.add_argument("--method", choices=METHODS, default="binary",
                    help="binary pulse multiplier (default), decimal (5121) pulse "
-                        "multiplier, integrator (DDA), or master (a binary multiplier "
-                        "slaved to the X axis's position sensor)")
+                        "multiplier, integrator (DDA), master (a binary multiplier "
+                        "slaved to the X axis's position sensor), or counter (OUR "
+                        "reconstruction of the named-only interpolator on counters "
+                        "with a variable division ratio: per axis a down-counter "
+                        "loaded with floor(N/D) or one more, pulse i on generator "
+                        "pulse ceil(i*N/D))")
     p.add_argument("--size", type=int, default=None, metavar="S",
-                   help="counter bits (binary), decades (decimal) or volume "
-                        "(integrator); default the smallest that holds the move")
+                   help="counter bits (binary, master), decades (decimal) or volume "
+                        "(integrator, counter); default the smallest that holds the "
+                        "move")
     p.add_argument("--max", type=int, default=None, metavar="N",
                    help="split the move into frames of at most N pulses first "
                         "(as 'split --max N') and interpolate frame by frame")
     p.add_argument("--lag", type=int, default=0, metavar="L",
                    help="the X drive moves L generator periods after its pulse (an "
                         "inertial axis); with --method master Y waits for it")
+    p.add_argument("--fixed-ratio", action="store_true",
+                   help="with --method counter: the naive divider, K = floor(N/D) "
+                        "fixed and each axis stopped after its D pulses, to show why "
+                        "the ratio must vary")
     p.add_argument("--plot", metavar="FILE.svg", help="write an SVG picture")
     p.set_defaults(func=_run_dda)

@@ -223,11 +223,16 @@ def test_hostile_files(tmp_path, kind, n):
         else:
             args = [hostile.number_word(r) for _ in range(r.randint(1, 3))]
             if r.random() < 0.5:
-                args += ["--method", r.choice(["binary", "decimal", "integrator", "x"])]
+                args += ["--method", r.choice(["binary", "decimal", "integrator", "master",
+                                               "counter", "x"])]
             if r.random() < 0.3:
                 args += ["--size", hostile.number_word(r)]
             if r.random() < 0.3:
                 args += ["--max", hostile.number_word(r)]
+            if r.random() < 0.2:
+                args += ["--lag", hostile.number_word(r)]
+            if r.random() < 0.2:
+                args += ["--fixed-ratio"]
             call(["dda", *args], here, where)
     hostile.count(PROGRAM.get(kind, kind), CHUNK)
 
@@ -253,6 +258,8 @@ FOUND = [
     ("dda 999999999 1", None, 2, "more than 2097152"),               # 2^30 pulses
     ("dda -1957 0 --size 99999999999999999999", None, 2, "1 to 64"),  # OverflowError
     ("dda -1862 2147483648 --method integrator", None, 2, "more than 2097152"),  # 10 ** 2^32
+    # the valve held 2^31 generator periods for each of X's pulses: gigabytes
+    ("dda 3 0 --method master --lag 2147483647", None, 2, "generator periods with the lag"),
 ]
 
 

@@ -5,6 +5,8 @@ from __future__ import annotations
 import math
 import subprocess
 import sys
+from fractions import Fraction
+from itertools import accumulate
 from pathlib import Path
 
 import pytest
@@ -121,8 +123,10 @@ def test_interpolators_end_on_the_point_within_their_bound(dx: int, dy: int, met
     assert len(run.xs) == run.volume + 1
     if method == "binary":
         assert run.max_deviation <= s4.binary_bound(dx, dy) + 1e-9
-    if method == "integrator":
-        assert run.max_deviation < math.sqrt(2)   # each axis within one pulse
+    if method in ("integrator", "counter"):
+        # each axis 0 to 1 pulse behind its share, both the same way:
+        # |dx*ey - dy*ex| / L < max(|dx|, |dy|) / L <= 1
+        assert run.max_deviation <= max(abs(dx), abs(dy)) / math.hypot(dx, dy) < 1
 
 
 def test_binary_deviation_grows_with_the_counter() -> None:
@@ -254,3 +258,216 @@ def test_master_command(capsys) -> None:
     assert main(["dda", "9813", "8765", "--method", "master", "--lag", "8"]) == 0
     out = capsys.readouterr().out
     assert "master interpolator, bits 14" in out and "+1.772 pulses" in out
+
+
+# ---------------------------------------------------------------------------
+# The interpolator on counters with a variable division ratio (named by the
+# document, not described: our reconstruction, a divider per axis).
+# ---------------------------------------------------------------------------
+def reference_times(d: int, n: int) -> list[int]:
+    """The rule, written apart from the simulated circuit: output pulse i
+    (1..d) on generator pulse ceil(i*n/d) (1-based)."""
+    return [math.ceil(Fraction(i * n, d)) for i in range(1, d + 1)]
+
+
+def times(pulses: list[int]) -> list[int]:
+    """1-based generator pulses that carry an output pulse."""
+    return [m + 1 for m, p in enumerate(pulses) if p]
+
+
+@st.composite
+def st_ratio(draw: st.DrawFn) -> tuple[int, int]:
+    """A counter volume N and a number of pulses 0 <= D < N."""
+    n = draw(st.integers(1, 1 << 14))
+    return draw(st.integers(0, n - 1)), n
+
+
+@given(st_ratio())
+@example((9813, 10000))
+@example((8765, 10000))
+@example((9813, 16384))
+@example((8764, 16384))
+@example((1, 2))
+@example((0, 1))
+@example((4999, 10000))
+def test_counter_pulses_follow_the_ceiling_rule(dn: tuple[int, int]) -> None:
+    """Pulse i on generator pulse ceil(i N / D): exactly D pulses a cycle,
+    the last on the N-th, each period K = floor(N/D) or K + 1 with exactly
+    r = N mod D long ones, the first long whenever r > 0."""
+    d, n = dn
+    got = times(s4.counter_pulses(d, n))
+    assert got == reference_times(d, n)
+    assert len(got) == d
+    if d == 0:
+        return
+    assert got[-1] == n
+    k, r = divmod(n, d)
+    periods = [b - a for a, b in zip([0] + got, got)]
+    assert set(periods) <= {k, k + 1}
+    assert periods.count(k + 1) == r
+    assert periods[0] == (k + 1 if r else k)
+
+
+def test_counter_is_the_integrator_for_every_small_volume() -> None:
+    """Two circuits, one pulse train: every N up to 64, every D < N."""
+    for n in range(1, 65):
+        for d in range(n):
+            assert s4.counter_pulses(d, n) == s4.integrator_pulses(d, n), (d, n)
+
+
+@given(st_ratio())
+@example((9813, 10000))
+@example((8765, 10000))
+@example((9814, 16384))
+@example((8764, 16384))
+def test_counter_is_the_integrator_pulse_for_pulse(dn: tuple[int, int]) -> None:
+    """After m generator pulses both have given floor(m D / N) pulses: the
+    divider stores a period, the integrator an accumulated phase."""
+    d, n = dn
+    counter = s4.counter_pulses(d, n)
+    assert counter == s4.integrator_pulses(d, n)
+    assert list(accumulate(counter)) == [m * d // n for m in range(1, n + 1)]
+
+
+@pytest.mark.parametrize("size,frames", [(None, False), (10000, False),
+                                         (None, True), (10000, True)])
+def test_counter_moves_as_the_integrator_on_the_documents_frames(size: int | None,
+                                                                  frames: bool) -> None:
+    """The first frame 9813, 8765 and the split move 98132, 87647 at most
+    9999 a frame, in the smallest volume (16384) and in the document's
+    10 000: the same path, position for position."""
+    if frames:
+        kw = {"max_pulses": 9999}
+        dx, dy = s4.DOCUMENT_MOVE
+    else:
+        kw = {}
+        dx, dy = s4.DOCUMENT_TABLE[0]
+    counter = s4.interpolate(dx, dy, "counter", size, **kw)
+    integrator = s4.interpolate(dx, dy, "integrator", size, **kw)
+    assert counter.volume == integrator.volume == (size or 16384)
+    assert (counter.xs, counter.ys) == (integrator.xs, integrator.ys)
+    if frames:
+        assert counter.frames == s4.DOCUMENT_TABLE
+
+
+def compare(a: list[int], b: list[int]) -> tuple[int, int, int]:
+    """Two trains of one cycle: pulses on the same generator pulse, the
+    largest difference of their counts so far, the largest difference of
+    the times of their i-th pulses."""
+    same = sum(1 for p, q in zip(a, b) if p and q)
+    count = max(abs(p - q) for p, q in zip(accumulate(a), accumulate(b)))
+    when = max(abs(p - q) for p, q in zip(times(a), times(b)))
+    return same, count, when
+
+
+@pytest.mark.parametrize("d,binary,decimal", [
+    (9813, (5877, 3, 5), (9629, 3, 3)),
+    (9814, (5878, 3, 5), (9630, 2, 2)),
+    (8765, (4689, 3, 4), (7675, 2, 3)),
+    (8764, (4684, 2, 4), (7680, 3, 3))])
+def test_counter_against_the_multipliers(d: int, binary: tuple[int, int, int],
+                                         decimal: tuple[int, int, int]) -> None:
+    """Every axis value of the document's frames: the counter interpolator
+    and the binary multiplier in 16384 (14 bits), and the decimal one in
+    10 000 (4 decades), do not give the same train: only part of the pulses
+    fall on the same generator pulse, the counts drift up to 3 pulses apart
+    and the i-th pulses up to 5 generator pulses.  The multiplier adds one
+    evenly spaced train per register digit; the sum is not evenly spaced."""
+    assert {f[0] for f in s4.DOCUMENT_TABLE} | {f[1] for f in s4.DOCUMENT_TABLE} == \
+        {9813, 9814, 8765, 8764}
+    assert compare(s4.binary_pulses(d, 14), s4.counter_pulses(d, 16384)) == binary
+    assert compare(s4.decimal_pulses(d, 4), s4.counter_pulses(d, 10000)) == decimal
+    assert compare(s4.integrator_pulses(d, 10000), s4.counter_pulses(d, 10000)) == (d, 0, 0)
+
+
+@pytest.mark.parametrize("method,size,first,split", [
+    ("binary", None, 1.1058, 1.7004),
+    ("decimal", None, 1.7981, 1.9325),
+    ("integrator", None, 0.7379, 1.0901),
+    ("integrator", 10000, 0.7274, 1.0581),
+    ("counter", None, 0.7379, 1.0901),
+    ("counter", 10000, 0.7274, 1.0581)])
+def test_deviations_on_the_documents_frames(method: str, size: int | None,
+                                            first: float, split: float) -> None:
+    """The table of the page: the largest distance from the line on the
+    first frame 9813, 8765 and on the whole move split at 9999."""
+    run = s4.interpolate(*s4.DOCUMENT_TABLE[0], method, size)
+    assert run.max_deviation == pytest.approx(first, abs=1e-4)
+    run = s4.interpolate(*s4.DOCUMENT_MOVE, method, size, max_pulses=9999)
+    assert run.max_deviation == pytest.approx(split, abs=1e-4)
+
+
+def test_fixed_ratio_on_the_documents_frame() -> None:
+    """Without the remainder register, 9813 and 8765 pulses in 10 000 both
+    divide by K = 1: free-running, each axis would give 10 000 pulses (187
+    and 1235 too many); stopped after their own, they run together to
+    (8765, 8765), 698.135 pulses off the line, and X goes on alone."""
+    run = s4.interpolate(9813, 8765, "counter", 10000, fixed_ratio=True)
+    assert run.fixed_ratio and (run.xs[-1], run.ys[-1]) == (9813, 8765)
+    assert run.worst == 8765 and (run.xs[8765], run.ys[8765]) == (8765, 8765)
+    assert run.max_deviation == pytest.approx(8765 * 1048 / math.hypot(9813, 8765))
+    assert run.max_deviation == pytest.approx(698.135, abs=1e-3)
+    assert s4.fixed_ratio_count(9813, 10000) == s4.fixed_ratio_count(8765, 10000) == 10000
+    assert "X 187 and Y 1235 pulses too many" in s4.summary(run)
+
+
+@given(st_ratio())
+@example((5, 16))
+@example((5, 15))
+@example((9813, 10000))
+def test_fixed_ratio_counts(dn: tuple[int, int]) -> None:
+    """K = floor(N/D) fixed: a free-running divider gives N // K >= D
+    pulses a cycle, exactly D only when K (D + 1) > N (D dividing N, or
+    e.g. 5 in 16); stopped after D, pulse i is on i K; with D dividing N
+    it is the variable divider's train."""
+    d, n = dn
+    free = sum(1 for m in range(1, n + 1) if d and m % (n // d) == 0)
+    assert s4.fixed_ratio_count(d, n) == free >= d
+    assert (free == d) == (d == 0 or (n // d) * (d + 1) > n)
+    got = times(s4.counter_pulses(d, n, fixed_ratio=True))
+    assert got == [i * (n // d) for i in range(1, d + 1)]
+    if d and n % d == 0:
+        assert s4.counter_pulses(d, n, fixed_ratio=True) == s4.counter_pulses(d, n)
+
+
+def test_counter_command(tmp_path: Path, capsys) -> None:
+    assert main(["dda", "9813", "8765", "--method", "counter", "--size", "10000"]) == 0
+    out = capsys.readouterr().out
+    assert out == ("move DX 9813 DY 8765 pulses, counter interpolator, volume 10000, "
+                   "10000 input pulses per frame, 1 frame\n"
+                   "largest deviation from the line: -0.727 pulses at input pulse 5401 "
+                   "(x 5300, y 4733)\n"
+                   "(our reconstruction of the document's named-only interpolator on "
+                   "counters with a variable division ratio)\n"
+                   "division coefficients: X K 1 r 187, Y K 1 r 1235\n")
+    svg = tmp_path / "counter.svg"
+    assert main(["dda", "98132", "87647", "--method", "counter", "--max", "9999",
+                 "--plot", str(svg)]) == 0
+    assert "counter interpolator, volume 16384" in capsys.readouterr().out
+    run = s4.interpolate(98132, 87647, "counter", max_pulses=9999)
+    assert svg.read_text() == s4.svg_plot(run)
+    assert main(["dda", "--help"]) == 0
+    assert "OUR reconstruction" in " ".join(capsys.readouterr().out.split())
+
+
+@pytest.mark.parametrize("args,words", [
+    ("0 0", "a move of (0, 0) has nothing to interpolate"),
+    ("5 3 --size 5", "5 pulses do not fit a counter interpolator of volume 5"),
+    ("5 3 --size 0", "5 pulses do not fit a counter interpolator of volume 0"),
+    ("-5 -3 --size -8", "5 pulses do not fit a counter interpolator of volume -8"),
+    ("5 3 --size 99999999999999999999", "more than 2097152"),
+    ("99999999 1", "more than 2097152"),
+    ("98132 87647 --max 9999 --size 300000", "would take 3000000 input pulses"),
+    ("5 3 --lag -1", "the lag is a number of generator periods"),
+])
+def test_counter_refuses_bad_input(capsys, args: str, words: str) -> None:
+    assert main(["dda", *args.split(), "--method", "counter"]) == 2
+    err = capsys.readouterr().err
+    assert err.startswith("dda: ") and words in err and err.count("\n") == 1, err
+
+
+def test_fixed_ratio_is_the_counters_only(capsys) -> None:
+    for method in ("binary", "decimal", "integrator", "master"):
+        assert main(["dda", "5", "3", "--method", method, "--fixed-ratio"]) == 2
+        assert capsys.readouterr().err == (f"dda: a fixed ratio is the counter "
+                                           f"interpolator's, not the {method}'s\n")
