@@ -1,0 +1,132 @@
+C=======================================================================
+C     CMLKK  - SHORTEN THE CYCLE FURTHER BY KICKS               (SHARED)
+C     SOURCE:  RECONSTRUCTED (SEE CMLK). A KICK CUTS THE CYCLE AFTER
+C              PLACES P, Q AND R (AT MOST LMAX ENDS APART; EVERY TENTH
+C              KICK UP TO A THIRD OF THE CYCLE) AND SWAPS THE TWO RUNS
+C              BETWEEN: A B C D BECOMES A C B D (A "DOUBLE BRIDGE",
+C              WHICH NO CHAIN OF 2-OPT MOVES WITH GAIN CAN MAKE). THE
+C              ENDS AT THE CUTS ARE QUEUED AND CMLKQ REPAIRS THE CYCLE
+C              AROUND THEM. IF THE CYCLE IS THEN SHORTER THE CHANGE IS
+C              KEPT (ALSO WHEN EQUALLY LONG), ELSE EVERY REVERSAL IT
+C              MADE IS UNDONE FROM THE
+C              JOURNAL, LAST FIRST. THE PLACES ARE DRAWN BY CMRAND FROM
+C              A FIXED SEED: THE SAME DECK GIVES THE SAME TOUR.
+C     NKICK   (INPUT)  INTEGER  THE NUMBER OF KICKS; FEWER WHEN THE
+C                               WORK BOUND KWMAX IS REACHED
+C     CHANGES: SEE THE HISTORY OF THE REPOSITORY (GIT LOG)
+C=======================================================================
+      SUBROUTINE CMLKK(NKICK)
+      IMPLICIT NONE
+      INTEGER NKICK
+C     ---- /CMITM/ THE ITEMS OF A TAPE AND THE TOUR THROUGH THEM -------
+      INTEGER MXITM
+      PARAMETER (MXITM = 300000)
+      INTEGER NITM, IKND(MXITM), IREF(MXITM), IEX(MXITM), IEY(MXITM),
+     1        IXX(MXITM), IXY(MXITM), ITOUR(MXITM), IPOS(MXITM),
+     2        IORI(MXITM)
+      COMMON /CMITM/ NITM, IKND, IREF, IEX, IEY, IXX, IXY, ITOUR, IPOS,
+     1               IORI
+      SAVE /CMITM/
+C     ---- /CMTWJ/ THE JOURNAL OF REVERSALS OF ONE KICK (CMKICK), AND
+C     THE LENGTH THE MOVES SINCE THE KICK HAVE TAKEN OFF THE TOUR ------
+      INTEGER MXJRN
+      PARAMETER (MXJRN = 20000)
+      INTEGER NJRN, LJRN, KJRN(2, MXJRN)
+      DOUBLE PRECISION DGAIN
+      COMMON /CMTWJ/ DGAIN, NJRN, LJRN, KJRN
+      SAVE /CMTWJ/
+C     ---- /CMTWK/ WORK SPACE OF THE TOUR: GRID, NEIGHBOURS, QUEUE -----
+      INTEGER MXPT, MXCEL, MXNB
+      PARAMETER (MXPT = 2 * MXITM + 2, MXCEL = 2 * MXITM, MXNB = 16)
+      INTEGER NGX, NGY, KGX0, KGY0, KGCS, KDSX, KDSY, KDTX, KDTY,
+     1        KQHD, KQN, KWORK, KWMAX,
+     2        KQX(MXPT), KQY(MXPT), KCST(MXCEL + 1), KCCN(MXCEL),
+     3        KCEL(MXPT), KSLT(MXPT), KNB(MXNB, MXPT), KQUE(MXITM),
+     4        LQUE(MXITM)
+      COMMON /CMTWK/ NGX, NGY, KGX0, KGY0, KGCS, KDSX, KDSY, KDTX, KDTY,
+     1               KQHD, KQN, KWORK, KWMAX, KQX, KQY, KCST, KCCN,
+     2               KCEL, KSLT, KNB, KQUE, LQUE
+      SAVE /CMTWK/
+C     ---- /CMTLK/ THE TOUR AS A CYCLE OF ENDS, FOR LIN-KERNIGHAN ------
+      INTEGER NLN, LQH, LQN, LTR(MXPT), LPS(MXPT), LMT(MXPT),
+     1        LQU(MXPT), LQF(MXPT)
+      COMMON /CMTLK/ NLN, LQH, LQN, LTR, LPS, LMT, LQU, LQF
+      SAVE /CMTLK/
+C     ---- LOCAL -------------------------------------------------------
+      INTEGER KK, J, LMAX, LM, L1, L2, IP, IQ, IR, ISEED,
+     1        IA1, IA2, IB1, IB2, IC1, IC2
+      DOUBLE PRECISION DIST
+      INTEGER JX1, JY1, JX2, JY2
+C     THE DISTANCE OF TWO POINTS: A STATEMENT FUNCTION, NO CALL
+      DIST(JX1, JY1, JX2, JY2) = SQRT((DBLE(JX1) - JX2)**2 +
+     1   (DBLE(JY1) - JY2)**2)
+C
+      IF (NLN .LT. 8) RETURN
+      ISEED = 1977
+      LMAX = MIN(50, NLN / 3)
+      DO 50 KK = 1, NKICK
+         IF (KWORK .GT. KWMAX) GOTO 60
+C        ---- EMPTY A QUEUE THE WORK BOUND LEFT ------------------------
+   20    CONTINUE
+         IF (LQN .GT. 0) THEN
+            LQF(LQU(LQH)) = 0
+            LQH = MOD(LQH, NLN) + 1
+            LQN = LQN - 1
+            GOTO 20
+         END IF
+C        ---- THE CUTS: AFTER P, Q = P + L1 AND R = Q + L2 -------------
+         LM = LMAX
+         IF (MOD(KK, 10) .EQ. 0) LM = MAX(LMAX, NLN / 3)
+         CALL CMRAND(ISEED)
+         L1 = 1 + MOD(ISEED, LM)
+         CALL CMRAND(ISEED)
+         L2 = 1 + MOD(ISEED, LM)
+         CALL CMRAND(ISEED)
+         IP = 1 + MOD(ISEED, NLN)
+         IQ = MOD(IP + L1 - 1, NLN) + 1
+         IR = MOD(IQ + L2 - 1, NLN) + 1
+         IA1 = LTR(IP)
+         IA2 = LTR(MOD(IP, NLN) + 1)
+         IB1 = LTR(IQ)
+         IB2 = LTR(MOD(IQ, NLN) + 1)
+         IC1 = LTR(IR)
+         IC2 = LTR(MOD(IR, NLN) + 1)
+C        NO CUT INSIDE AN ITEM, NOR BETWEEN THE TAPE'S END AND START
+         IF (LMT(IA1) .EQ. IA2 .OR. LMT(IB1) .EQ. IB2 .OR.
+     1       LMT(IC1) .EQ. IC2) GOTO 50
+C        ---- WHAT THE KICK ADDS TO THE CYCLE (A NEGATIVE GAIN) --------
+         DGAIN = DIST(KQX(IA1), KQY(IA1), KQX(IA2), KQY(IA2))
+     1         + DIST(KQX(IB1), KQY(IB1), KQX(IB2), KQY(IB2))
+     2         + DIST(KQX(IC1), KQY(IC1), KQX(IC2), KQY(IC2))
+     3         - DIST(KQX(IA1), KQY(IA1), KQX(IB2), KQY(IB2))
+     4         - DIST(KQX(IC1), KQY(IC1), KQX(IA2), KQY(IA2))
+     5         - DIST(KQX(IB1), KQY(IB1), KQX(IC2), KQY(IC2))
+C        ---- A B C D TO A C B D BY THREE REVERSALS, JOURNALLED --------
+         NJRN = 0
+         LJRN = 1
+         CALL CMREVL(MOD(IP, NLN) + 1, L1 + L2)
+         CALL CMREVL(MOD(IP, NLN) + 1, L2)
+         CALL CMREVL(MOD(IP + L2, NLN) + 1, L1)
+         CALL CMLQP(IA1)
+         CALL CMLQP(IA2)
+         CALL CMLQP(IB1)
+         CALL CMLQP(IB2)
+         CALL CMLQP(IC1)
+         CALL CMLQP(IC2)
+         CALL CMLKQ(1)
+C        ---- KEEP A CYCLE NO LONGER (ON A BOARD'S GRID MANY TOURS ARE
+C        EQUALLY LONG: THE SEARCH MAY WALK AMONG THEM); ELSE UNDO, LAST
+C        REVERSAL FIRST ---------------------------------------------
+         IF (LJRN .EQ. 1 .AND. DGAIN .LE. -1.0D-6) THEN
+            LJRN = 0
+            DO 30 J = NJRN, 1, -1
+               CALL CMREVL(KJRN(1, J), KJRN(2, J))
+   30       CONTINUE
+         END IF
+         LJRN = 0
+   50 CONTINUE
+   60 CONTINUE
+      LJRN = 0
+      RETURN
+C     END OF CMLKK
+      END

@@ -1,0 +1,80 @@
+C=======================================================================
+C     CMREVL - REVERSE A RUN OF THE CYCLE OF ENDS               (SHARED)
+C     SOURCE:  RECONSTRUCTED (SEE CMLK). THE LEN ENDS AT PLACES IA,
+C              IA+1, ... OF THE CYCLE LTR (PLACES COUNTED ROUND THE
+C              CYCLE, NLN FOLLOWED BY 1) ARE PUT IN REVERSE ORDER.
+C     IA      (INPUT)  INTEGER  THE FIRST PLACE, 1..NLN
+C     LEN     (INPUT)  INTEGER  THE NUMBER OF ENDS, 0..NLN
+C     THE ENDS MOVED ARE COUNTED IN KWORK. WHILE LJRN = 1 THE RUN IS
+C     ALSO WRITTEN IN THE JOURNAL KJRN (A REVERSAL UNDOES ITSELF); WERE
+C     THE JOURNAL EVER FULL, LJRN = 2 SAYS THE CHANGES CAN NO LONGER BE
+C     UNDONE (CMLKQ STOPS BEFORE THAT CAN HAPPEN).
+C     CHANGES: SEE THE HISTORY OF THE REPOSITORY (GIT LOG)
+C=======================================================================
+      SUBROUTINE CMREVL(IA, LEN)
+      IMPLICIT NONE
+      INTEGER IA, LEN
+C     ---- /CMITM/ THE ITEMS OF A TAPE AND THE TOUR THROUGH THEM -------
+      INTEGER MXITM
+      PARAMETER (MXITM = 300000)
+      INTEGER NITM, IKND(MXITM), IREF(MXITM), IEX(MXITM), IEY(MXITM),
+     1        IXX(MXITM), IXY(MXITM), ITOUR(MXITM), IPOS(MXITM),
+     2        IORI(MXITM)
+      COMMON /CMITM/ NITM, IKND, IREF, IEX, IEY, IXX, IXY, ITOUR, IPOS,
+     1               IORI
+      SAVE /CMITM/
+C     ---- /CMTWJ/ THE JOURNAL OF REVERSALS OF ONE KICK (CMKICK), AND
+C     THE LENGTH THE MOVES SINCE THE KICK HAVE TAKEN OFF THE TOUR ------
+      INTEGER MXJRN
+      PARAMETER (MXJRN = 20000)
+      INTEGER NJRN, LJRN, KJRN(2, MXJRN)
+      DOUBLE PRECISION DGAIN
+      COMMON /CMTWJ/ DGAIN, NJRN, LJRN, KJRN
+      SAVE /CMTWJ/
+C     ---- /CMTWK/ WORK SPACE OF THE TOUR: GRID, NEIGHBOURS, QUEUE -----
+      INTEGER MXPT, MXCEL, MXNB
+      PARAMETER (MXPT = 2 * MXITM + 2, MXCEL = 2 * MXITM, MXNB = 16)
+      INTEGER NGX, NGY, KGX0, KGY0, KGCS, KDSX, KDSY, KDTX, KDTY,
+     1        KQHD, KQN, KWORK, KWMAX,
+     2        KQX(MXPT), KQY(MXPT), KCST(MXCEL + 1), KCCN(MXCEL),
+     3        KCEL(MXPT), KSLT(MXPT), KNB(MXNB, MXPT), KQUE(MXITM),
+     4        LQUE(MXITM)
+      COMMON /CMTWK/ NGX, NGY, KGX0, KGY0, KGCS, KDSX, KDSY, KDTX, KDTY,
+     1               KQHD, KQN, KWORK, KWMAX, KQX, KQY, KCST, KCCN,
+     2               KCEL, KSLT, KNB, KQUE, LQUE
+      SAVE /CMTWK/
+C     ---- /CMTLK/ THE TOUR AS A CYCLE OF ENDS, FOR LIN-KERNIGHAN ------
+      INTEGER NLN, LQH, LQN, LTR(MXPT), LPS(MXPT), LMT(MXPT),
+     1        LQU(MXPT), LQF(MXPT)
+      COMMON /CMTLK/ NLN, LQH, LQN, LTR, LPS, LMT, LQU, LQF
+      SAVE /CMTLK/
+C     ---- LOCAL -------------------------------------------------------
+      INTEGER I, J, K, N
+C
+      IF (LEN .LT. 2) RETURN
+      I = IA
+      J = MOD(IA + LEN - 2, NLN) + 1
+      DO 10 K = 1, LEN / 2
+         N = LTR(I)
+         LTR(I) = LTR(J)
+         LTR(J) = N
+         LPS(LTR(I)) = I
+         LPS(N) = J
+         I = I + 1
+         IF (I .GT. NLN) I = 1
+         J = J - 1
+         IF (J .LT. 1) J = NLN
+   10 CONTINUE
+      KWORK = KWORK + LEN
+      IF (LJRN .EQ. 1) THEN
+         IF (NJRN .LT. MXJRN) THEN
+            NJRN = NJRN + 1
+            KJRN(1, NJRN) = IA
+            KJRN(2, NJRN) = LEN
+         ELSE
+            LJRN = 2
+         END IF
+      END IF
+      RETURN
+C     END OF CMREVL
+      END

@@ -1,0 +1,64 @@
+C=======================================================================
+C     CMVPOS - THE PLACE OF AN END IN THE CYCLE AS A MOVE BEING TRIED
+C              WOULD LEAVE IT                                   (SHARED)
+C     SOURCE:  RECONSTRUCTED (SEE CMLKST). A MOVE BEING TRIED IS NOT
+C              MADE: ITS REVERSALS ARE ONLY LISTED (/CMTLV/, THE RUN
+C              FROM PLACE KRA(I) ROUND TO KRB(I) OF THE CYCLE AS THE
+C              REVERSALS BEFORE IT LEFT IT), AND A PLACE IS MAPPED
+C              THROUGH THEM: A STEP COSTS THE DEPTH OF THE MOVE, NOT
+C              THE LENGTH OF THE RUNS.
+C     N       (INPUT)  INTEGER  THE END
+C     CHANGES: SEE THE HISTORY OF THE REPOSITORY (GIT LOG)
+C=======================================================================
+      INTEGER FUNCTION CMVPOS(N)
+      IMPLICIT NONE
+      INTEGER N
+C     ---- /CMITM/ THE ITEMS OF A TAPE AND THE TOUR THROUGH THEM -------
+      INTEGER MXITM
+      PARAMETER (MXITM = 300000)
+      INTEGER NITM, IKND(MXITM), IREF(MXITM), IEX(MXITM), IEY(MXITM),
+     1        IXX(MXITM), IXY(MXITM), ITOUR(MXITM), IPOS(MXITM),
+     2        IORI(MXITM)
+      COMMON /CMITM/ NITM, IKND, IREF, IEX, IEY, IXX, IXY, ITOUR, IPOS,
+     1               IORI
+      SAVE /CMITM/
+C     ---- /CMTWK/ WORK SPACE OF THE TOUR: GRID, NEIGHBOURS, QUEUE -----
+      INTEGER MXPT, MXCEL, MXNB
+      PARAMETER (MXPT = 2 * MXITM + 2, MXCEL = 2 * MXITM, MXNB = 16)
+      INTEGER NGX, NGY, KGX0, KGY0, KGCS, KDSX, KDSY, KDTX, KDTY,
+     1        KQHD, KQN, KWORK, KWMAX,
+     2        KQX(MXPT), KQY(MXPT), KCST(MXCEL + 1), KCCN(MXCEL),
+     3        KCEL(MXPT), KSLT(MXPT), KNB(MXNB, MXPT), KQUE(MXITM),
+     4        LQUE(MXITM)
+      COMMON /CMTWK/ NGX, NGY, KGX0, KGY0, KGCS, KDSX, KDSY, KDTX, KDTY,
+     1               KQHD, KQN, KWORK, KWMAX, KQX, KQY, KCST, KCCN,
+     2               KCEL, KSLT, KNB, KQUE, LQUE
+      SAVE /CMTWK/
+C     ---- /CMTLK/ THE TOUR AS A CYCLE OF ENDS, FOR LIN-KERNIGHAN ------
+      INTEGER NLN, LQH, LQN, LTR(MXPT), LPS(MXPT), LMT(MXPT),
+     1        LQU(MXPT), LQF(MXPT)
+      COMMON /CMTLK/ NLN, LQH, LQN, LTR, LPS, LMT, LQU, LQF
+      SAVE /CMTLK/
+C     ---- /CMTLV/ THE REVERSALS OF A MOVE BEING TRIED (CMLKST) --------
+      INTEGER MXDEP
+      PARAMETER (MXDEP = 3)
+      INTEGER NVR, KRA(MXDEP), KRB(MXDEP)
+      COMMON /CMTLV/ NVR, KRA, KRB
+      SAVE /CMTLV/
+C     ---- LOCAL -------------------------------------------------------
+      INTEGER I, IP, IOFF, LEN
+C
+      IP = LPS(N)
+      IF (NVR .EQ. 0) THEN
+         CMVPOS = IP
+         RETURN
+      END IF
+      DO 10 I = 1, NVR
+         IOFF = MOD(IP - KRA(I) + NLN, NLN)
+         LEN = MOD(KRB(I) - KRA(I) + NLN, NLN)
+         IF (IOFF .LE. LEN) IP = MOD(KRA(I) - 1 + LEN - IOFF, NLN) + 1
+   10 CONTINUE
+      CMVPOS = IP
+      RETURN
+C     END OF CMVPOS
+      END
