@@ -5,8 +5,10 @@
  * file in the target's directory, created exclusively (O_CREAT | O_EXCL: a
  * name that exists, a symbolic link planted there included, is never opened;
  * another name is tried), written in full, fsynced and closed; only then is
- * it renamed over the target, and the directory is fsynced. A failure leaves
- * the target as it was and removes the temporary file.
+ * it renamed over the target, and the directory is fsynced (once, after
+ * the last of several files renamed into it: em_commit's sync_dir, and
+ * em_sync_dir). A failure leaves the target as it was and removes the
+ * temporary file.
  *
  * A target that exists and is not a regular file (a terminal, a pipe, a
  * FIFO, /dev/stdout, /dev/null) cannot be replaced by a rename: the bytes are
@@ -160,23 +162,31 @@ int em_close_out(int fd, const char *tmp, long long total)
     return rc;
 }
 
-/* Rename a staged file over its target; fsync the target's directory. */
-int em_commit(const char *tmp, const char *path)
+/* fsync the directory that holds path, so that the renames into it are on
+ * disk. Not every file system can; a rename stands either way. */
+void em_sync_dir(const char *path)
 {
     char dir[4096];
     int dfd;
+    dir_of(path, dir, sizeof dir);
+    dfd = open(dir, O_RDONLY | O_CLOEXEC);
+    if (dfd >= 0) {
+        fsync(dfd);
+        close(dfd);
+    }
+}
+
+/* Rename a staged file over its target; with sync_dir, fsync the target's
+ * directory (without it the caller does so after its last rename there). */
+int em_commit(const char *tmp, const char *path, int sync_dir)
+{
     if (tmp[0] == '\0') return 0;  /* written straight into a device or FIFO */
     if (rename(tmp, path) != 0) {
         int rc = errno;
         unlink(tmp);
         return rc;
     }
-    dir_of(path, dir, sizeof dir);
-    dfd = open(dir, O_RDONLY | O_CLOEXEC);
-    if (dfd >= 0) {
-        fsync(dfd);                 /* not every file system can; the rename stands */
-        close(dfd);
-    }
+    if (sync_dir) em_sync_dir(path);
     return 0;
 }
 

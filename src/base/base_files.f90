@@ -11,7 +11,7 @@ module base_files
     use, intrinsic :: iso_c_binding, only: c_int, c_char, c_null_char, c_size_t, c_long_long
     implicit none
     private
-    public :: write_whole, stage_file, commit_file, discard_file
+    public :: write_whole, stage_file, commit_file, sync_dir_of, discard_file
     public :: lock_dir, unlock_dir, same_file, read_whole
     public :: open_out, write_out, close_out
 
@@ -23,11 +23,16 @@ module base_files
             character(kind=c_char), intent(out) :: tmp(*)
             integer(c_int) :: rc
         end function c_stage
-        function c_commit(tmp, path) bind(c, name='em_commit') result(rc)
+        function c_commit(tmp, path, sync_dir) bind(c, name='em_commit') result(rc)
             import :: c_int, c_char
             character(kind=c_char), intent(in) :: tmp(*), path(*)
+            integer(c_int), value :: sync_dir
             integer(c_int) :: rc
         end function c_commit
+        subroutine c_sync_dir(path) bind(c, name='em_sync_dir')
+            import :: c_char
+            character(kind=c_char), intent(in) :: path(*)
+        end subroutine c_sync_dir
         subroutine c_discard(tmp) bind(c, name='em_discard')
             import :: c_char
             character(kind=c_char), intent(in) :: tmp(*)
@@ -229,13 +234,27 @@ contains
         msg = os_message(c_close_out(int(fd, c_int), tmp // c_null_char, total))
     end subroutine close_out
 
-    !> Rename a staged file over its target (the target's directory fsynced);
-    !> nothing to do when it was written straight into a device (tmp empty).
-    subroutine commit_file(tmp, path, msg)
+    !> Rename a staged file over its target (the target's directory fsynced,
+    !> unless sync_dir is false: then the caller calls sync_dir_of after its
+    !> last rename into that directory); nothing to do when it was written
+    !> straight into a device (tmp empty).
+    subroutine commit_file(tmp, path, msg, sync_dir)
         character(len=*), intent(in) :: tmp, path
         character(len=:), allocatable, intent(out) :: msg
-        msg = os_message(c_commit(tmp // c_null_char, path // c_null_char))
+        logical, intent(in), optional :: sync_dir
+        integer(c_int) :: flag
+        flag = 1
+        if (present(sync_dir)) then
+            if (.not. sync_dir) flag = 0
+        end if
+        msg = os_message(c_commit(tmp // c_null_char, path // c_null_char, flag))
     end subroutine commit_file
+
+    !> fsync the directory that holds path (after renames into it).
+    subroutine sync_dir_of(path)
+        character(len=*), intent(in) :: path
+        call c_sync_dir(path // c_null_char)
+    end subroutine sync_dir_of
 
     !> Remove a staged file that is not to be committed.
     subroutine discard_file(tmp)

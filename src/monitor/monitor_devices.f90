@@ -16,8 +16,8 @@ module monitor_devices
     use, intrinsic :: iso_fortran_env, only: error_unit, output_unit, int64
     use base_error, only: no_memory
     use base_os, only: make_dirs, is_dir, read_fd
-    use base_files, only: stage_file, commit_file, discard_file, lock_dir, unlock_dir, &
-                          same_file
+    use base_files, only: stage_file, commit_file, sync_dir_of, discard_file, lock_dir, &
+                          unlock_dir, same_file
     use base_io, only: say
     use base_sha256, only: sha256_hex
     implicit none
@@ -306,8 +306,10 @@ contains
                      'without the lock')
             lockfd = -1
         end if
+        ! the files of a package are renamed into one directory, which is
+        ! fsynced once after the last of them (a failed rename fsyncs it too)
         do i = 1, nfiles
-            call commit_file(trim(staged(i)), trim(final(i)), msg)
+            call commit_file(trim(staged(i)), trim(final(i)), msg, sync_dir=.false.)
             if (len(msg) > 0) then
                 call say('tenzor: cannot rename into ' // trim(final(i)) // ' (' // msg // &
                          '); ' // pkg_name // ': the files before it in the list are new, ' // &
@@ -315,12 +317,14 @@ contains
                 do j = i + 1, nfiles
                     call discard_file(trim(staged(j)))
                 end do
+                if (i > 1) call sync_dir_of(trim(final(1)))
                 call unlock_dir(lockfd)
                 io_failed = .true.
                 write(output_unit, '(a)') pkg_name // ': cannot write all its files'
                 return
             end if
         end do
+        call sync_dir_of(trim(final(1)))
         call unlock_dir(lockfd)
         if (keep) then
             write(output_unit, '(a)') pkg_name // ': tapes ' // base // '-small.ptp ' // &
