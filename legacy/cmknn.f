@@ -37,18 +37,31 @@ C     ---- /CMTWK/ WORK SPACE OF THE TOUR: GRID, NEIGHBOURS, QUEUE -----
      2               KCEL, KSLT, KNB, KQUE, LQUE
       SAVE /CMTWK/
 C     ---- LOCAL -------------------------------------------------------
-      INTEGER MXQ, MXRING
-      PARAMETER (MXQ = 2, MXRING = 30)
+      INTEGER MXQ, MXRING, MXQEN
+      PARAMETER (MXQ = 2, MXRING = 30, MXQEN = 4000)
       INTEGER IP, IC, ICX, ICY, K, IGX, IGY, IS, IQ, ISTEP, KMAX, N, J,
      1        NBI(MXNB), NQ(4), KQB(MXQ, 4), IQD, IDX, IDY, NF,
-     2        L, NBF(MXNB)
+     2        L, NBF(MXNB), NEX, NEX16, IBX1, IBX2, IBY1, IBY2
       DOUBLE PRECISION D, RK, NBD(MXNB), QBD(MXQ, 4), DF(MXNB), CMRBND
-      LOGICAL LDONE
+      LOGICAL LDONE, LOUT(4)
       EXTERNAL CMRBND
 C
       KMAX = MAX(NGX, NGY)
+C     THE BOX OF THE ENDS: NO END LIES IN A QUADRANT BEYOND IT
+      IBX1 = KQX(1)
+      IBX2 = KQX(1)
+      IBY1 = KQY(1)
+      IBY2 = KQY(1)
+      DO 2 IP = 1, NP
+         IBX1 = MIN(IBX1, KQX(IP))
+         IBX2 = MAX(IBX2, KQX(IP))
+         IBY1 = MIN(IBY1, KQY(IP))
+         IBY2 = MAX(IBY2, KQY(IP))
+    2 CONTINUE
       DO 60 IP = 1, NP
          N = 0
+         NEX = 0
+         NEX16 = -1
          DO 5 J = 1, 4
             NQ(J) = 0
     5    CONTINUE
@@ -66,6 +79,7 @@ C
                   IC = IGX + IGY * NGX + 1
                   DO 10 IS = KCST(IC), KCST(IC) + KCCN(IC) - 1
                      IQ = KCEL(IS)
+                     NEX = NEX + 1
                      D = (DBLE(KQX(IQ)) - KQX(IP))**2 +
      1                   (DBLE(KQY(IQ)) - KQY(IP))**2
 C                    NOT ITSELF, NOT THE OTHER END OF ITS OWN ITEM,
@@ -105,8 +119,28 @@ C           IS PASSED
             IF (N .LT. MXNB) GOTO 40
             IF (NBD(N) .GT. RK * RK) GOTO 40
             IF (K .GE. MXRING) GOTO 45
+C           THE NEAREST ARE FOUND: THE QUADRANTS' SEARCH LOOKS AT
+C           MXQEN MORE ENDS AT MOST (WHOLE RINGS), SO THAT ENDS IN A
+C           ROW, WHOSE CELLS HOLD MANY AND WHOSE QUADRANTS ACROSS THE
+C           ROW ARE EMPTY, DO NOT SEARCH MXRING RINGS OF FULL CELLS
+            IF (NEX16 .LT. 0) NEX16 = NEX
+            IF (NEX - NEX16 .GT. MXQEN) GOTO 45
+C           A QUADRANT IS DONE WHEN ITS MXQ NEAREST ARE FOUND, OR WHEN
+C           NO END CAN BE IN IT BEYOND RING K: NO CELL OF IT LIES THERE,
+C           OR THE END IS ON THE BOX'S SIDE THE QUADRANT LIES BEYOND (AN
+C           END NEAR THE EDGE, OR IN A ROW OF ENDS, HAS QUADRANTS WITH
+C           FEW ENDS OR NONE, NOT SEARCHED ON)
+            LOUT(1) = (ICX + K + 1 .GT. NGX - 1 .AND.
+     1                 ICY + K + 1 .GT. NGY - 1) .OR. KQX(IP) .GE. IBX2
+            LOUT(2) = (ICX - K - 1 .LT. 0 .AND.
+     1                 ICY + K + 1 .GT. NGY - 1) .OR. KQY(IP) .GE. IBY2
+            LOUT(3) = (ICX - K - 1 .LT. 0 .AND.
+     1                 ICY - K - 1 .LT. 0) .OR. KQX(IP) .LE. IBX1
+            LOUT(4) = (ICX + K + 1 .GT. NGX - 1 .AND.
+     1                 ICY - K - 1 .LT. 0) .OR. KQY(IP) .LE. IBY1
             LDONE = .TRUE.
             DO 35 J = 1, 4
+               IF (LOUT(J)) GOTO 35
                IF (NQ(J) .LT. MXQ) THEN
                   LDONE = .FALSE.
                ELSE IF (QBD(MXQ, J) .GT. RK * RK) THEN
