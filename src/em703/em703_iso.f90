@@ -81,6 +81,8 @@ module em703_iso
     character(len=*), parameter :: NO_MOVE = '+000000', TAB = achar(9)
     !> The kinds of frame.
     integer, parameter, public :: FRAME_ADDRESS = 0, FRAME_FIXED = 1, FRAME_VARIABLE = 2
+    !> The most characters of a program a message shows (then "...").
+    integer, parameter :: SHOWN_MAX = 20
 
     type :: state_t
         integer :: n = 0                 !< last block number of this program
@@ -405,6 +407,34 @@ contains
         end select
     end subroutine move
 
+    !> Characters of a program for a message: the first SHOWN_MAX of them,
+    !> then "..." when there are more; a TAB shown as <TAB>. Built in one
+    !> pass into a string of the length it will have, so that a line of
+    !> any length costs a message of at most SHOWN_MAX * 5 + 3 characters.
+    function shown(s) result(t)
+        character(len=*), intent(in) :: s
+        character(len=:), allocatable :: t
+        integer :: i, m, n
+        m = min(len(s), SHOWN_MAX)
+        n = m
+        do i = 1, m
+            if (s(i:i) == TAB) n = n + 4
+        end do
+        if (len(s) > m) n = n + 3
+        allocate(character(len=n) :: t)
+        n = 0
+        do i = 1, m
+            if (s(i:i) == TAB) then
+                t(n + 1:n + 5) = '<TAB>'
+                n = n + 5
+            else
+                t(n + 1:n + 1) = s(i:i)
+                n = n + 1
+            end if
+        end do
+        if (len(s) > m) t(n + 1:n + 3) = '...'
+    end function shown
+
     ! ------------------------------------------------------------------
     !> The group of G code g (0..99): 1 G00-G09, 2 G10-G39, 3 G40-G59,
     !> 4 G60-G79, 5 G80-G99.
@@ -500,21 +530,6 @@ contains
                 end do
             end if
         end subroutine read_line
-
-        !> s for a message, a TAB shown as <TAB>.
-        function shown(s) result(t)
-            character(len=*), intent(in) :: s
-            character(len=:), allocatable :: t
-            integer :: i
-            t = ''
-            do i = 1, len(s)
-                if (s(i:i) == TAB) then
-                    t = t // '<TAB>'
-                else
-                    t = t // s(i:i)
-                end if
-            end do
-        end function shown
 
         !> The block number of a frame for its messages (0: none readable).
         integer function number_of(s) result(n)
@@ -613,7 +628,7 @@ contains
             end do
             if (len(s) > FIXED_LENGTH) then
                 call fault(n, 'a fixed frame has ' // str(FIXED_LENGTH) // ' characters, this ' // &
-                    'one ' // str(len(s)) // ': "' // shown(s(c:min(len(s), c + 19))) // &
+                    'one ' // str(len(s)) // ': "' // shown(s(c:)) // &
                     '" after slot M (from column ' // str(c) // ')' // hint)
                 return
             end if
@@ -771,7 +786,8 @@ contains
                 end do
                 ! the word is s(p:q-1)
                 if (rank < last_rank .or. (rank == last_rank .and. a /= 'G' .and. a /= 'M')) then
-                    call fault(n, 'the word ' // s(p:q - 1) // ' is out of the order N G X Y Z I J K F S T M')
+                    call fault(n, 'the word ' // shown(s(p:q - 1)) // ' is out of the order ' // &
+                               'N G X Y Z I J K F S T M')
                     return
                 end if
                 last_rank = rank
@@ -779,12 +795,12 @@ contains
                 case ('X', 'Y', 'Z', 'I', 'J', 'K')
                     if (q - p /= 8 .or. index('+-', s(p + 1:p + 1)) == 0 .or. &
                         verify(s(p + 2:q - 1), '0123456789') > 0) then
-                        call fault(n, 'the word ' // s(p:q - 1) // ' is not a sign and six digits')
+                        call fault(n, 'the word ' // shown(s(p:q - 1)) // ' is not a sign and six digits')
                         return
                     end if
                 case default
                     if (q - p /= 3 .or. verify(s(p + 1:q - 1), '0123456789') > 0) then
-                        call fault(n, 'the word ' // s(p:q - 1) // ' is not two digits')
+                        call fault(n, 'the word ' // shown(s(p:q - 1)) // ' is not two digits')
                         return
                     end if
                     read (s(p + 1:q - 1), *) v

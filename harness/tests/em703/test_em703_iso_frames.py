@@ -213,6 +213,34 @@ def test_variable_frames_at_fault(em703_exe, tmp_path):
         assert got[0] == f"{prog}: {want}", (bad, got)
 
 
+def test_a_slot_of_megabytes_is_refused_at_once_in_one_short_line(em703_exe, tmp_path):
+    """A message shows at most 20 characters of the program, then "...": a
+    variable frame whose slot holds 2 MB of digits (its TABs lost), and an
+    address block of one such word, are each refused with one short line.
+    (The slot was once copied into the message a character at a time, which
+    took minutes; the timeout makes such a regression fail, not hang.)"""
+    digits = "1" * 2_000_000
+    cases = [
+        ("variable", "001\t" + digits,
+         'block N001 (line 2): slot G00-G09 (2nd slot, columns 5-2000004) "' + "1" * 20 +
+         '..." is not two digits (nor two spaces, no word) (2000000 characters, 2 wanted: a TAB '
+         'missing?)'),
+        ("address", "N001 X" + digits,
+         "block N001 (line 2): the word X" + "1" * 19 + "... is not a sign and six digits"),
+        ("fixed", "001  17" + "+000000" * 5 + "      " + digits,
+         'block N001 (line 2): a fixed frame has 48 characters, this one 2000048: "' + "1" * 20 +
+         '..." after slot M (from column 49)'),
+    ]
+    for frame, block, want in cases:
+        prog = tmp_path / f"long.{frame}"
+        _write(prog, [block])
+        proc = subprocess.run([str(em703_exe), "check", "--frame", frame, str(prog)],
+                              capture_output=True, timeout=60)
+        assert proc.returncode == 1 and proc.stdout == b"", frame
+        assert proc.stderr.decode("ascii") == f"{prog}: {want}\n", frame
+        assert len(proc.stderr) < 300 + len(str(prog))
+
+
 def test_variable_slots_resolve_before_the_group_check(em703_exe, tmp_path):
     """An empty slot is the previous block's value: the checks run on the
     resolved block (M03 in store and M05 cannot clash: one M slot), and the
