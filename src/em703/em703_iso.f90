@@ -55,7 +55,7 @@ module em703_iso
                          SEG_ARC, SEG_DOT, SEG_RAISE, LINE_SPEED, ARC_SPEED
     use em703_gcode, only: chord_count, plain => clean
     use em703_split, only: frames_needed, split_frame
-    use base_text, only: text_t, str
+    use base_text, only: text_t, str, octal
     use base_error, only: error_t
     implicit none
     private
@@ -408,9 +408,12 @@ contains
     end subroutine move
 
     !> Characters of a program for a message: the first SHOWN_MAX of them,
-    !> then "..." when there are more; a TAB shown as <TAB>. Built in one
-    !> pass into a string of the length it will have, so that a line of
-    !> any length costs a message of at most SHOWN_MAX * 5 + 3 characters.
+    !> then "..." when there are more; a byte that is not a printable ASCII
+    !> character (below 32, 127, above 127) shown as its octal code in angle
+    !> brackets, the code em703 view prints for its row: <011> a TAB, <177>
+    !> a delete. Built in one pass into a string of the length it will have,
+    !> so that a line of any length costs a message of at most
+    !> 5 * SHOWN_MAX + 3 characters and nothing reaches the terminal raw.
     function shown(s) result(t)
         character(len=*), intent(in) :: s
         character(len=:), allocatable :: t
@@ -418,22 +421,27 @@ contains
         m = min(len(s), SHOWN_MAX)
         n = m
         do i = 1, m
-            if (s(i:i) == TAB) n = n + 4
+            if (.not. printable(s(i:i))) n = n + 4
         end do
         if (len(s) > m) n = n + 3
         allocate(character(len=n) :: t)
         n = 0
         do i = 1, m
-            if (s(i:i) == TAB) then
-                t(n + 1:n + 5) = '<TAB>'
-                n = n + 5
-            else
+            if (printable(s(i:i))) then
                 t(n + 1:n + 1) = s(i:i)
                 n = n + 1
+            else
+                t(n + 1:n + 5) = '<' // octal(iachar(s(i:i)), 3) // '>'
+                n = n + 5
             end if
         end do
         if (len(s) > m) t(n + 1:n + 3) = '...'
     end function shown
+
+    pure logical function printable(ch)
+        character, intent(in) :: ch
+        printable = iachar(ch) >= 32 .and. iachar(ch) <= 126
+    end function printable
 
     ! ------------------------------------------------------------------
     !> The group of G code g (0..99): 1 G00-G09, 2 G10-G39, 3 G40-G59,
@@ -647,7 +655,7 @@ contains
             n = number_of(s)
             if (s(1:1) == 'N') then
                 call fault(n, 'a variable frame begins with its number, three digits, not "' // &
-                           s(1:min(4, len(s))) // '" (a letter address: an address frame? see --frame)')
+                           shown(s(1:min(4, len(s)))) // '" (a letter address: an address frame? see --frame)')
                 return
             end if
             v = prev
@@ -752,7 +760,8 @@ contains
                                '" (no letter: a fixed or a variable frame? see --frame)')
                     return
                 end if
-                call fault(0, 'a block begins with N and three digits, not "' // s(1:min(4, len(s))) // '"')
+                call fault(0, 'a block begins with N and three digits, not "' // &
+                           shown(s(1:min(4, len(s)))) // '"')
                 return
             end if
             read (s(2:4), *) n
@@ -776,7 +785,7 @@ contains
                 a = s(p:p)
                 rank = index(ORDER, a)
                 if (rank <= 1) then
-                    call fault(n, 'no address "' // a // '" in the block format')
+                    call fault(n, 'no address "' // shown(a) // '" in the block format')
                     return
                 end if
                 q = p + 1

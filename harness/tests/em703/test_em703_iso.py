@@ -140,3 +140,30 @@ def test_check_of_a_tape_with_a_parity_error(em703_exe, tmp_path) -> None:
     assert proc.returncode == 1
     assert proc.stderr.decode() == f"{tape}: row 26: parity error (odd number of holes): not an " \
                                    "ISO tape, or a misread row\n"
+
+
+def test_check_shows_control_characters_in_octal(em703_exe, tmp_path) -> None:
+    """A byte of the program that is not a printable character reaches a
+    message as its octal code in angle brackets (the code `em703 view`
+    prints for its row), never raw: a delete, an ESC, a CR in the middle of
+    a line, a TAB; nothing else below 32 is on standard error."""
+    cases = [
+        ("address", "N001 G17\x7f\x1b", 'block N001 (line 2): the word G17<177><033> is not two '
+                                        "digits"),
+        ("address", "N001 G17\rX+000000", "block N001 (line 2): the word G17<015> is not two digits"),
+        ("address", "N001 \x1b[2J", 'block N001 (line 2): no address "<033>" in the block format'),
+        ("address", "001\x07", 'line 2: a block begins with N and three digits, not "001<007>" '
+                              "(no letter: a fixed or a variable frame? see --frame)"),
+        ("variable", "N\x0c01", 'line 2: a variable frame begins with its number, three digits, '
+                               'not "N<014>01" (a letter address: an address frame? see --frame)'),
+        ("variable", "001\t0\x7f", 'block N001 (line 2): slot G00-G09 (2nd slot, columns 5-6) '
+                                   '"0<177>" is not two digits (nor two spaces, no word)'),
+        ("fixed", "001\t" + "0" * 44, 'block N001 (line 2): slot G00-G09 (columns 4-5) "<011>0" has '
+                                    "a TAB in it (a TAB at column 4: a variable frame? see --frame)"),
+    ]
+    for frame, block, want in cases:
+        prog = tmp_path / "c.iso"
+        prog.write_bytes(f"%\n{block}\n%\n".encode("ascii"))
+        proc = _em(em703_exe, "check", "--frame", frame, prog)
+        assert proc.returncode == 1 and proc.stdout == b"", block
+        assert proc.stderr == f"{prog}: {want}\n".encode("ascii"), (block, proc.stderr)

@@ -276,7 +276,7 @@ def test_fixed_frames_of_the_wrong_width_are_refused(em703_exe, tmp_path):
             "block N002 (line 3): a fixed frame has 48 characters, this one 46: it ends in slot M "
             "(columns 47-48), which is cut short",
         good[:3] + "\t" + good[3:]:
-            'block N002 (line 3): slot G00-G09 (columns 4-5) "<TAB>0" has a TAB in it; the frame '
+            'block N002 (line 3): slot G00-G09 (columns 4-5) "<011>0" has a TAB in it; the frame '
             "has 49 characters, a fixed frame 48 (a TAB at column 4: a variable frame? see --frame)",
         good[:3] + "17" + good[5:]:
             'block N002 (line 3): slot G00-G09 (columns 4-5) "17" is G17, not of G00-G09, the '
