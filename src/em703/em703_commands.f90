@@ -17,7 +17,7 @@ module em703_commands
     use em703_gcode, only: gcode_program
     use em703_gerber, only: gerber_image
     use em703_drill, only: hole_t, find_holes, drill_program
-    use em703_punch, only: punch_text, eia_char
+    use em703_punch, only: punch_text, eia_char, ISO_DELETE, EIA_DELETE
     use em703_view, only: view_tape, guess_code
     use em703_split, only: frames_needed, split_frame, split_equal
     use em703_html, only: html_job
@@ -641,8 +641,9 @@ contains
     !> frame ("address", "fixed", "variable"), as text or as a tape image
     !> (a byte 0 or above 127): ISO when most punched rows have an even
     !> number of holes (track 8 dropped), else EIA (read back to ASCII, the
-    !> letters upper case); blank rows skipped, a row of the wrong parity or
-    !> no EIA code an error. Checked block by block (em703_iso).
+    !> letters upper case); blank rows and delete rows (a row rubbed out)
+    !> skipped, a row of the wrong parity or no EIA code an error. Checked
+    !> block by block (em703_iso).
     integer function run_check(path, frame) result(status)
         character(len=*), intent(in) :: path, frame
         character(len=:), allocatable :: bytes, prog, tmp, lines
@@ -670,7 +671,7 @@ contains
             n = 0
             do i = 1, len(bytes)
                 c = iachar(bytes(i:i))
-                if (c == 0) cycle
+                if (c == 0 .or. c == merge(EIA_DELETE, ISO_DELETE, eia)) cycle
                 if (eia) then
                     if (mod(popcnt(c), 2) == 0) then
                         call say(path // ': row ' // str(i) // ': parity error (even number of ' // &

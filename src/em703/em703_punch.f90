@@ -28,6 +28,10 @@ module em703_punch
 
     integer, parameter, public :: LEADER = 20
     integer, parameter, public :: EIA_EOB = 128
+    !> The delete rows, how a punch operator rubs out a row (every hole of
+    !> the code punched over it): ISO DEL with its parity track, all eight
+    !> tracks; EIA tracks 1-7. A reader skips them.
+    integer, parameter, public :: ISO_DELETE = 255, EIA_DELETE = 127
     integer, parameter :: TRACK5 = 16, TRACK8 = 128
 
 contains
@@ -214,7 +218,7 @@ contains
             s = 'parity error (even number of holes)'
             return
         end if
-        if (v == 127) then
+        if (v == EIA_DELETE) then
             s = 'delete'
             return
         end if

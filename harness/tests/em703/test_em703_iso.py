@@ -167,3 +167,35 @@ def test_check_shows_control_characters_in_octal(em703_exe, tmp_path) -> None:
         proc = _em(em703_exe, "check", "--frame", frame, prog)
         assert proc.returncode == 1 and proc.stdout == b"", block
         assert proc.stderr == f"{prog}: {want}\n".encode("ascii"), (block, proc.stderr)
+
+
+def test_check_skips_delete_rows(em703_exe, tmp_path) -> None:
+    """A punch operator rubs out a row by punching every hole of the code over
+    it: a delete row, all eight tracks on ISO tape (0377, DEL with its parity
+    track), tracks 1-7 on EIA (0177), as `em703 view` names them. The reader
+    skips it as it skips a blank row, on both tapes; a delete row of one code
+    on the other's tape is still a parity error."""
+    prog = tmp_path / "p.iso"
+    prog.write_text("%\nN001 G17\nN002 M02\n%\n")
+    for code, delete, other in (("iso", 0o377, 0o177), ("eia", 0o177, 0o377)):
+        tape = tmp_path / f"p.{code}.ptp"
+        assert _em(em703_exe, "punch", "--code", code, prog, "-o", tape).returncode == 0
+        good = _em(em703_exe, "check", tape)
+        assert good.returncode == 0, good.stderr
+        data = bytearray(tape.read_bytes())
+        # a wrong digit after the 1 of N001, rubbed out; two more delete rows
+        # at the start of the program and inside N002
+        data[26:26] = bytes([delete])
+        data[22:22] = bytes([delete])
+        data[33:33] = bytes([delete])
+        tape.write_bytes(bytes(data))
+        view = _em(em703_exe, "view", tape, "--code", code, "--rows", "27:28").stdout.decode()
+        assert f"| {delete:03o}   delete" in view, view
+        back = _em(em703_exe, "check", tape)
+        assert back.returncode == 0, back.stderr
+        assert back.stdout.split(b": ", 1)[1] == good.stdout.split(b": ", 1)[1] == \
+            b"1 program, 2 blocks, no tape error\n"
+        data[27] = other
+        tape.write_bytes(bytes(data))
+        bad = _em(em703_exe, "check", tape)
+        assert bad.returncode == 1 and b"row 28: parity error" in bad.stderr, bad.stderr
