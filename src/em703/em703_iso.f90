@@ -620,9 +620,16 @@ contains
                 where = 'slot ' // trim(SLOT_NAME(k)) // ' (columns ' // str(c) // '-' // &
                         str(c + SLOT_WIDTH(k) - 1) // ')'
                 if (c + SLOT_WIDTH(k) - 1 > len(s)) then
+                    if (c <= len(s)) then
+                        why = 'it ends in ' // where // ', which is cut short'
+                    else if (k == NSLOTS) then
+                        why = where // ' is missing'
+                    else
+                        why = 'slots ' // trim(SLOT_NAME(k)) // ' to ' // trim(SLOT_NAME(NSLOTS)) // &
+                              ' (columns ' // str(c) // '-' // str(FIXED_LENGTH) // ') are missing'
+                    end if
                     call fault(n, 'a fixed frame has ' // str(FIXED_LENGTH) // ' characters, ' // &
-                        'this one ' // str(len(s)) // ': it ends in ' // where // ', which is ' // &
-                        'cut short' // hint)
+                        'this one ' // str(len(s)) // ': ' // why // hint)
                     return
                 end if
                 if (.not. slot_ok(k, s(c:c + SLOT_WIDTH(k) - 1), why)) then

@@ -273,7 +273,13 @@ def test_fixed_frames_of_the_wrong_width_are_refused(em703_exe, tmp_path):
             'block N002 (line 3): a fixed frame has 48 characters, this one 49: "0" after slot M '
             "(from column 49)",
         good[:-2]:                   # the trailing M slot lost (an editor's trim)
-            "block N002 (line 3): a fixed frame has 48 characters, this one 46: it ends in slot M "
+            "block N002 (line 3): a fixed frame has 48 characters, this one 46: slot M (columns "
+            "47-48) is missing",
+        good[:-4]:                   # T and M lost
+            "block N002 (line 3): a fixed frame has 48 characters, this one 44: slots T to M "
+            "(columns 45-48) are missing",
+        good[:-1]:                   # half of M lost
+            "block N002 (line 3): a fixed frame has 48 characters, this one 47: it ends in slot M "
             "(columns 47-48), which is cut short",
         good[:3] + "\t" + good[3:]:
             'block N002 (line 3): slot G00-G09 (columns 4-5) "<011>0" has a TAB in it; the frame '
