@@ -687,8 +687,13 @@ contains
                         return
                     end if
                 else if (.not. slot_ok(k, s(p:q - 1), why)) then
-                    if (q - p > SLOT_WIDTH(k)) why = why // ' (' // str(q - p) // ' characters, ' // &
-                        str(SLOT_WIDTH(k)) // ' wanted: a TAB missing?)'
+                    if (k == S_N .and. q > len(s) .and. len(s) == FIXED_LENGTH) then
+                        why = why // ' (' // str(q - p) // ' characters and no TAB, a fixed ' // &
+                            'frame''s width: a fixed frame? see --frame)'
+                    else if (q - p > SLOT_WIDTH(k)) then
+                        why = why // ' (' // str(q - p) // ' characters, ' // str(SLOT_WIDTH(k)) // &
+                            ' wanted: a TAB missing?)'
+                    end if
                     call fault(n, where // ' "' // shown(s(p:q - 1)) // '" ' // why)
                     return
                 else

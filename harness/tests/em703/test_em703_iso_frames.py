@@ -298,15 +298,39 @@ def test_fixed_frames_of_the_wrong_width_are_refused(em703_exe, tmp_path):
         assert proc.stderr.decode("utf-8").splitlines() == [f"{prog}: {want}"], bad
 
 
-def test_a_fixed_program_checked_as_address_says_so(em703_exe, example_jobs, tmp_path):
+def test_a_program_checked_in_the_wrong_frame_says_so_at_its_first_block(em703_exe, example_jobs,
+                                                                       tmp_path):
+    """docs/TOOLS.md: "A program checked in the wrong kind of frame says so at
+    its first block", for each of the six pairs of kinds."""
     job = next(j for j in example_jobs if j.name == "EXAMPLE3.job")
-    prog = tmp_path / "f.iso"
-    prog.write_text(_gcode(em703_exe, job, "fixed"))
-    proc = _em(em703_exe, "check", prog)
-    assert proc.returncode == 1
-    first = proc.stderr.decode().splitlines()[0]
-    assert first == f'{prog}: line 5: a block begins with N and three digits, not "001 " (no ' \
-                    "letter: a fixed or a variable frame? see --frame)"
+    want = {
+        ("address", "fixed"):
+            'line 4: slot N (columns 1-3) "N00" is not three digits; the frame has 8 characters, a '
+            "fixed frame 48 (a letter address: an address frame? see --frame)",
+        ("address", "variable"):
+            'line 4: a variable frame begins with its number, three digits, not "N001" (a letter '
+            "address: an address frame? see --frame)",
+        ("fixed", "address"):
+            'line 5: a block begins with N and three digits, not "001 " (no letter: a fixed or a '
+            "variable frame? see --frame)",
+        ("fixed", "variable"):
+            'block N001 (line 5): slot N (1st slot, columns 1-48) "001  17+000000+00000..." is not '
+            "three digits (48 characters and no TAB, a fixed frame's width: a fixed frame? see "
+            "--frame)",
+        ("variable", "address"):
+            'line 5: a block begins with N and three digits, not "001<011>" (no letter: a fixed or '
+            "a variable frame? see --frame)",
+        ("variable", "fixed"):
+            'block N001 (line 5): slot G00-G09 (columns 4-5) "<011><011>" has a TAB in it; the frame '
+            "has 7 characters, a fixed frame 48 (a TAB at column 4: a variable frame? see --frame)",
+    }
+    for (written, checked), message in want.items():
+        prog = tmp_path / f"p.{written}"
+        prog.write_text(_gcode(em703_exe, job, written))
+        proc = _em(em703_exe, "check", "--frame", checked, prog)
+        assert proc.returncode == 1 and proc.stdout == b"", (written, checked)
+        first = proc.stderr.decode().splitlines()[0]
+        assert first == f"{prog}: {message}", (written, checked, first)
 
 
 def test_tab_on_iso_and_eia_tape(em703_exe, tmp_path):
