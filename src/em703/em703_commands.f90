@@ -646,18 +646,21 @@ contains
     !> block by block (em703_iso).
     integer function run_check(path, frame) result(status)
         character(len=*), intent(in) :: path, frame
-        character(len=:), allocatable :: bytes, prog, tmp, lines
+        character(len=:), allocatable :: bytes, prog, tmp, lines, why
         type(text_t) :: msgs, text
-        integer :: i, c, n, nerr, nprog, nblocks, k, j, even, odd
+        integer :: i, c, n, nerr, nprog, nblocks, k, j, even, odd, high, nl
         logical :: tape, eia
         call read_tape(path, bytes, status)
         if (status /= EXIT_OK) return
-        tape = .false.
+        tape = index(bytes, achar(0)) > 0
+        high = 0
+        nl = 0
         even = 0
         odd = 0
         do i = 1, len(bytes)
             c = iachar(bytes(i:i))
-            if (c == 0 .or. c > 127) tape = .true.
+            if (c > 127 .and. high == 0) high = i
+            if (c == 10 .and. high == 0) nl = nl + 1
             if (c == 0) cycle
             if (mod(popcnt(c), 2) == 0) then
                 even = even + 1
@@ -666,6 +669,17 @@ contains
             end if
         end do
         eia = odd > even
+        ! a file without a blank row is a tape image for its rows with track 8
+        ! (bytes above 127), which a text that is not ASCII also has (UTF-8
+        ! letters in a comment, say): a row's fault then says why the file was
+        ! read as a tape
+        why = ''
+        if (.not. tape .and. high > 0) then
+            tape = .true.
+            why = ' (read as a tape image for its bytes above 127, the first at row ' // &
+                  str(high) // ', line ' // str(nl + 1) // ' as text: ' // &
+                  'a program as text must be ASCII)'
+        end if
         if (tape) then
             allocate(character(len=len(bytes)) :: prog)
             n = 0
@@ -675,7 +689,7 @@ contains
                 if (eia) then
                     if (mod(popcnt(c), 2) == 0) then
                         call say(path // ': row ' // str(i) // ': parity error (even number of ' // &
-                                 'holes): not an EIA tape, or a misread row')
+                                 'holes): not an EIA tape, or a misread row' // why)
                         status = EXIT_INPUT
                         return
                     end if
@@ -683,14 +697,14 @@ contains
                     if (c < 0) then
                         call say(path // ': row ' // str(i) // ': octal ' // &
                                  octal(iachar(bytes(i:i)), 3) // ' is no EIA RS-244 code: not an ' // &
-                                 'EIA tape, or a misread row')
+                                 'EIA tape, or a misread row' // why)
                         status = EXIT_INPUT
                         return
                     end if
                 else
                     if (mod(popcnt(c), 2) == 1) then
                         call say(path // ': row ' // str(i) // ': parity error (odd number of ' // &
-                                 'holes): not an ISO tape, or a misread row')
+                                 'holes): not an ISO tape, or a misread row' // why)
                         status = EXIT_INPUT
                         return
                     end if

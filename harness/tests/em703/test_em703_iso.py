@@ -199,3 +199,24 @@ def test_check_skips_delete_rows(em703_exe, tmp_path) -> None:
         tape.write_bytes(bytes(data))
         bad = _em(em703_exe, "check", tape)
         assert bad.returncode == 1 and b"row 28: parity error" in bad.stderr, bad.stderr
+
+
+def test_a_text_that_is_not_ascii_is_read_as_a_tape_and_says_why(em703_exe, tmp_path) -> None:
+    """A byte above 127 is a row with track 8: a file that has one is read as
+    a tape image, a text of UTF-8 letters too. Its fault then says so and
+    where the first such byte is, as a row and as a line of text; a tape
+    with its blank leader needs no such word."""
+    prog = tmp_path / "ru.iso"
+    prog.write_text("%\n(проверка)\nN001 G17\n%\n", encoding="utf-8")
+    proc = _em(em703_exe, "check", prog)
+    assert proc.returncode == 1 and proc.stdout == b""
+    assert proc.stderr.decode() == (
+        f"{prog}: row 2: parity error (even number of holes): not an EIA tape, or a misread row "
+        "(read as a tape image for its bytes above 127, the first at row 4, line 2 as text: a "
+        "program as text must be ASCII)\n")
+    prog.write_text("%\nN001 G17 (é)\n%\n", encoding="utf-8")
+    proc = _em(em703_exe, "check", prog)
+    assert proc.returncode == 1
+    assert proc.stderr.decode().endswith(": not an ISO tape, or a misread row (read as a tape image "
+                                         "for its bytes above 127, the first at row 13, line 2 as "
+                                         "text: a program as text must be ASCII)\n")
