@@ -246,6 +246,17 @@ def test_variable_slots_resolve_before_the_group_check(em703_exe, tmp_path):
     resolved block (M03 in store and M05 cannot clash: one M slot), and the
     block numbers must still increase."""
     prog = tmp_path / "v.iso"
+    # M03, then M05 in the M slot (M03 is replaced, not added), then an empty
+    # M slot (M05 again): no clash of the spindle's group
+    _write(prog, ["001\t\t17", "002" + TAB * 10 + "03", "003" + TAB * 10 + "05", "004\t01"])
+    ok = _em(em703_exe, "check", "--frame", "variable", prog)
+    assert ok.returncode == 0 and ok.stdout == f"{prog}: 1 program, 4 blocks, no tape error\n".encode()
+    # written as address blocks, the resolved blocks: M03 and M05 never meet
+    _write(prog, ["N001 G17", "N002 G17 M03", "N003 G17 M05", "N004 G01 G17 M05"])
+    assert _em(em703_exe, "check", prog).returncode == 0
+    _write(prog, ["N001 G17", "N002 M03 M05"])
+    clash = _em(em703_exe, "check", prog)
+    assert clash.returncode == 1 and b"M03 and M05 are of one group" in clash.stderr
     _write(prog, ["001\t\t17", "002\t01\t\t\t\t\t\t\t\t\t07", "002\t00"])
     proc = _em(em703_exe, "check", "--frame", "variable", prog)
     assert proc.returncode == 1
@@ -373,8 +384,13 @@ def test_frame_on_the_command_line(em703_exe, example_tapes, tmp_path):
     bad = _em(em703_exe, "gcode", "--dialect", "iso-1970s", tape, "--frame", "tab")
     assert bad.returncode == 2
     assert b'--frame takes address, fixed or variable, not "tab"' in bad.stderr
-    bad = _em(em703_exe, "check", tmp_path / "x", "--frame", "")
-    assert bad.returncode == 2
+    prog = tmp_path / "p.iso"
+    prog.write_text("%\nN001 G17\n%\n")
+    assert _em(em703_exe, "check", prog, "--frame", "address").returncode == 0
+    bad = _em(em703_exe, "check", prog, "--frame", "")
+    assert bad.returncode == 2 and bad.stdout == b""
+    assert bad.stderr == b'em703 check: --frame takes address, fixed or variable, not "" (see em703 ' \
+                         b"check --help)\n"
     for sub in ("gcode", "check"):
         assert b"--frame" in _em(em703_exe, sub, "--help").stdout
     assert b"[--frame address|fixed|variable]" in _em(em703_exe, "--help").stdout
