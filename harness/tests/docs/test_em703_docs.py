@@ -2,9 +2,9 @@
 `$ em703 ...` line is run in a directory holding TENZOR's output for every
 deck of examples/ in `out/`, and what it prints (standard output, then
 standard error) is what the page shows; a line `...` stands for lines left
-out. The sizes of seed 004's three kinds of frame that TOOLS.md and
-SEED004-TAPE-CODES.md quote are what `em703 gcode --dialect iso-1970s`
-writes for the example jobs."""
+out. The sizes of seed 004's three kinds of frame that TOOLS.md,
+SEED004-TAPE-CODES.md and README.md quote are what `em703 gcode --dialect
+iso-1970s` writes for the example jobs."""
 
 from __future__ import annotations
 
@@ -123,3 +123,9 @@ def test_the_sizes_of_the_three_frames_are_what_em703_writes(em703_exe, example_
     assert m, "TOOLS.md no longer gives the sizes of the three frames"
     assert [_number(g) for g in m.groups()[:4]] == row(demo)
     assert [_number(g) for g in m.groups()[5:]] == row(m.group(5))[1:]
+    # README: a fixed frame's characters and rows
+    m = re.search(r"--frame fixed: (\d+) characters \+ end of block, (\d+) rows\)",
+                  (ROOT / "README.md").read_text())
+    assert m, "README.md no longer gives the fixed frame's length"
+    assert (int(m.group(2)) - 1, int(m.group(2))) == (int(m.group(1)), row(demo)[2] // row(demo)[0])
+    assert row(demo)[2] % row(demo)[0] == 0
