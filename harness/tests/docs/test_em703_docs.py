@@ -16,7 +16,7 @@ from pathlib import Path
 
 import pytest
 
-from harness.tests.helpers import ROOT
+from harness.tests.helpers import ROOT, iso_programs
 from harness.tape import Frame, encode
 
 
@@ -78,9 +78,9 @@ def _frame_sizes(em703_exe, job: Path, frame: str) -> tuple[int, int, int]:
     proc = subprocess.run([str(em703_exe), "gcode", "--dialect", "iso-1970s", "--frame", frame,
                            str(job)], capture_output=True, timeout=120)
     assert proc.returncode == 0, proc.stderr
-    lines = proc.stdout.decode("ascii").split("\n")[:-1]
-    blocks = [ln for ln in lines if ln != "%" and not ln.startswith("(")]
-    return lines.count("%") // 2, len(blocks), sum(len(b) + 1 for b in blocks)
+    progs = iso_programs(proc.stdout.decode("ascii"))
+    blocks = [b for prog in progs for b in prog]
+    return len(progs), len(blocks), sum(len(b) + 1 for b in blocks)
 
 
 def _number(text: str) -> int:

@@ -11,6 +11,8 @@ import re
 import subprocess
 from pathlib import Path
 
+from harness.tests.helpers import iso_programs
+
 BLOCK = re.compile(r"N\d{3}( [GXYZIJFSTM][+-]?\d+)*$")
 
 
@@ -42,21 +44,6 @@ def linuxcnc_points(text: str) -> list[tuple[int, int]]:
     return out
 
 
-def _programs(text: str) -> list[list[str]]:
-    progs, cur = [], None
-    for line in text.splitlines():
-        if line == "%":
-            if cur is None:
-                cur = []
-            else:
-                progs.append(cur)
-                cur = None
-        elif cur is not None and not line.startswith("("):
-            cur.append(line)
-    assert cur is None
-    return progs
-
-
 def test_example_programs(em703_exe, example_jobs, example_tapes, tmp_path) -> None:
     for src in list(example_jobs) + list(example_tapes)[:6]:
         iso = _em(em703_exe, "gcode", "--dialect", "iso-1970s", src)
@@ -66,7 +53,7 @@ def test_example_programs(em703_exe, example_jobs, example_tapes, tmp_path) -> N
         assert again.stdout == iso.stdout                       # byte-identical
         for line in text.splitlines():
             assert line == "%" or line.startswith("(") or BLOCK.match(line), (src, line)
-        progs = _programs(text)
+        progs = iso_programs(text)
         for prog in progs:
             nums = [int(b[1:4]) for b in prog]
             assert nums == list(range(1, len(nums) + 1)) and len(nums) <= 999
@@ -95,7 +82,7 @@ def test_long_program_is_cut_into_complete_programs(em703_exe, example_jobs) -> 
     biggest = max(example_jobs, key=lambda j: len(_em(em703_exe, "gcode", "--dialect",
                                                         "iso-1970s", j).stdout))
     text = _em(em703_exe, "gcode", "--dialect", "iso-1970s", biggest).stdout.decode()
-    progs = _programs(text)
+    progs = iso_programs(text)
     assert len(progs) >= 2
     for prog in progs:
         assert 1 <= len(prog) <= 999 and prog[0] == "N001 G17" and prog[-1].endswith(" M02")

@@ -16,6 +16,8 @@ from __future__ import annotations
 
 import subprocess
 
+from harness.tests.helpers import iso_programs
+
 #: The slots of fixed and variable frames and their widths (em703_iso.f90).
 SLOTS = [("N", 3), ("G", 2), ("G", 2), ("X", 7), ("Y", 7), ("Z", 7), ("I", 7), ("J", 7),
          ("F", 2), ("T", 2), ("M", 2)]
@@ -34,22 +36,6 @@ def _gcode(exe, src, frame=None) -> str:
     proc = _em(exe, *args)
     assert proc.returncode == 0, proc.stderr
     return proc.stdout.decode("ascii")
-
-
-def _programs(text: str) -> list[list[str]]:
-    """The blocks of each program (comments and % lines aside)."""
-    progs, cur = [], None
-    for line in text.split("\n")[:-1]:
-        if line == "%":
-            if cur is None:
-                cur = []
-            else:
-                progs.append(cur)
-                cur = None
-        elif cur is not None and not line.startswith("("):
-            cur.append(line)
-    assert cur is None and text.endswith("%\n")
-    return progs
 
 
 def _empty(k: int) -> str:
@@ -120,7 +106,7 @@ def test_three_frames_carry_the_same_blocks(em703_exe, example_jobs, example_tap
         assert address.encode() == plain                    # --frame address is today's
         fixed = _gcode(em703_exe, src, "fixed")
         variable = _gcode(em703_exe, src, "variable")
-        pa, pf, pv = _programs(address), _programs(fixed), _programs(variable)
+        pa, pf, pv = iso_programs(address), iso_programs(fixed), iso_programs(variable)
         assert len(pa) == len(pf) == len(pv) >= 1
         for a, f, v in zip(pa, pf, pv):
             assert len(a) == len(f) == len(v)
@@ -159,8 +145,8 @@ def test_three_frames_carry_the_same_blocks(em703_exe, example_jobs, example_tap
 def test_the_variable_frame_leaves_out_what_is_unchanged(em703_exe, example_jobs):
     """EXAMPLE3: the layout of docs/TOOLS.md, a TAB for every unchanged slot."""
     job = next(j for j in example_jobs if j.name == "EXAMPLE3.job")
-    variable = _programs(_gcode(em703_exe, job, "variable"))[0]
-    fixed = _programs(_gcode(em703_exe, job, "fixed"))[0]
+    variable = iso_programs(_gcode(em703_exe, job, "variable"))[0]
+    fixed = iso_programs(_gcode(em703_exe, job, "fixed"))[0]
     assert variable[0] == "001\t\t17"
     assert fixed[0] == "001  17" + "+000000" * 5 + "      "
     # T02 M06 after T01 M06: only the T slot changes, M06 stays in store
