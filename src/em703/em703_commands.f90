@@ -17,7 +17,7 @@ module em703_commands
     use em703_gcode, only: gcode_program
     use em703_gerber, only: gerber_image
     use em703_drill, only: hole_t, find_holes, drill_program
-    use em703_punch, only: punch_text, eia_char, ISO_DELETE, EIA_DELETE
+    use em703_punch, only: punch_text, eia_char, iso_or_eia, ISO_DELETE, EIA_DELETE
     use em703_view, only: view_tape, guess_code
     use em703_split, only: frames_needed, split_frame, split_equal
     use em703_html, only: html_job
@@ -648,27 +648,22 @@ contains
         character(len=*), intent(in) :: path, frame
         character(len=:), allocatable :: bytes, prog, tmp, lines, why
         type(text_t) :: msgs, text
-        integer :: i, c, n, nerr, nprog, nblocks, k, j, even, odd, high, nl
+        integer :: i, c, n, nerr, nprog, nblocks, k, j, high, nl
         logical :: tape, eia
         call read_tape(path, bytes, status)
         if (status /= EXIT_OK) return
         tape = index(bytes, achar(0)) > 0
         high = 0
         nl = 0
-        even = 0
-        odd = 0
         do i = 1, len(bytes)
             c = iachar(bytes(i:i))
-            if (c > 127 .and. high == 0) high = i
-            if (c == 10 .and. high == 0) nl = nl + 1
-            if (c == 0) cycle
-            if (mod(popcnt(c), 2) == 0) then
-                even = even + 1
-            else
-                odd = odd + 1
+            if (c > 127) then
+                high = i
+                exit
             end if
+            if (c == 10) nl = nl + 1
         end do
-        eia = odd > even
+        eia = iso_or_eia(bytes) == 'eia'
         ! a file without a blank row is a tape image for its rows with track 8
         ! (bytes above 127), which a text that is not ASCII also has (UTF-8
         ! letters in a comment, say): a row's fault then says why the file was

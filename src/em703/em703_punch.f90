@@ -24,7 +24,7 @@ module em703_punch
     use base_text, only: octal
     implicit none
     private
-    public :: punch_text, iso_row, eia_row, iso_meaning, eia_meaning, holes, eia_char
+    public :: punch_text, iso_row, eia_row, iso_meaning, eia_meaning, holes, eia_char, iso_or_eia
 
     integer, parameter, public :: LEADER = 20
     integer, parameter, public :: EIA_EOB = 128
@@ -116,6 +116,27 @@ contains
         end do
         c = -1
     end function eia_char
+
+    !> The code of an 8-track tape image (one byte a row): "iso" when at
+    !> least as many of its punched rows have an even number of holes as an
+    !> odd number, else "eia". Blank rows do not count.
+    function iso_or_eia(data) result(code)
+        character(len=*), intent(in) :: data
+        character(len=:), allocatable :: code
+        integer :: i, even, odd, v
+        even = 0
+        odd = 0
+        do i = 1, len(data)
+            v = iachar(data(i:i))
+            if (v == 0) cycle
+            if (mod(holes(v), 2) == 0) then
+                even = even + 1
+            else
+                odd = odd + 1
+            end if
+        end do
+        code = merge('iso', 'eia', even >= odd)
+    end function iso_or_eia
 
     !> Punch text as a tape image in code "iso" or "eia".
     subroutine punch_text(text, code, rows, err)
@@ -222,22 +243,16 @@ contains
             s = 'delete'
             return
         end if
-        do c = 9, 122
-            if (c >= iachar('A') .and. c <= iachar('Z')) cycle     ! the letters once
-            if (eia_row(c) == v) then
-                select case (c)
-                case (9); s = 'tab'
-                case (32); s = 'space'
-                case (iachar('%')); s = '% (rewind stop)'
-                case (iachar('(')); s = '( (control out)'
-                case (iachar(')')); s = ') (control in)'
-                case (iachar('a'):iachar('z')); s = achar(c - 32)
-                case default; s = achar(c)
-                end select
-                return
-            end if
-        end do
-        s = 'not an EIA code'
+        c = eia_char(v)
+        select case (c)
+        case (-1); s = 'not an EIA code'
+        case (9); s = 'tab'
+        case (32); s = 'space'
+        case (iachar('%')); s = '% (rewind stop)'
+        case (iachar('(')); s = '( (control out)'
+        case (iachar(')')); s = ') (control in)'
+        case default; s = achar(c)
+        end select
     end function eia_meaning
 
 end module em703_punch
