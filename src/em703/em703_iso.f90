@@ -662,7 +662,8 @@ contains
             n = number_of(s)
             if (s(1:1) == 'N') then
                 call fault(n, 'a variable frame begins with its number, three digits, not "' // &
-                           shown(s(1:min(4, len(s)))) // '" (a letter address: an address frame? see --frame)')
+                           shown(s(1:min(4, len(s)))) // '" (a letter address: an address frame? ' // &
+                           'see --frame)')
                 return
             end if
             v = prev
