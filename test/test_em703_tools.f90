@@ -17,7 +17,8 @@ program test_em703_tools
     use em703_svg, only: svg_run
     use em703_gcode, only: gcode_program, chord_count, ROUNDING
     use em703_gerber, only: gerber_image
-    use em703_punch, only: punch_text, iso_row, eia_row, eia_meaning, iso_meaning, LEADER
+    use em703_punch, only: punch_text, iso_row, eia_row, eia_meaning, iso_meaning, LEADER, eia_char, &
+                           iso_or_eia, EIA_DELETE
     use em703_view, only: view_tape, guess_code
     use em703_jobsheet, only: job_t, read_job, parse_scale, machine_scale
     use base_io, only: write_text
@@ -609,6 +610,26 @@ contains
         call punch_text('G01 X1' // achar(10) // 'G00 #1=2', 'eia', rows, err)
         call check(allocated(err), 'EIA refuses #')
         if (allocated(err)) call check(err%number == 2 .and. err%column == 5, 'EIA error at line 2 column 5')
+        ! reading back (eia_char, which eia_meaning uses): every character of
+        ! the code, its letters upper case; every other row none
+        do c = 0, 127
+            i = c
+            if (c >= iachar('a') .and. c <= iachar('z')) i = c - 32
+            if (eia_row(c) >= 0) call check_int(eia_char(eia_row(c)), i, 'EIA read back: ' // achar(c))
+        end do
+        do i = 1, 255
+            if (any([(eia_row(c) == i, c = 0, 127)])) cycle
+            call check_int(eia_char(i), -1, 'EIA row ' // str(i) // ' is no character')
+            if (mod(popcnt(i), 2) == 1 .and. i < 128 .and. i /= EIA_DELETE) &
+                call check_str(eia_meaning(i), 'not an EIA code', 'EIA row ' // str(i) // ' means none')
+        end do
+        call check_str(eia_meaning(EIA_DELETE), 'delete', 'EIA delete')
+        call check_str(eia_meaning(eia_row(9)), 'tab', 'EIA tab')
+        ! the code of a tape: the parity of most punched rows, blank rows aside
+        call check_str(iso_or_eia(achar(0) // achar(0) // achar(7) // achar(1) // achar(3)), 'eia', &
+            'most rows odd: EIA')
+        call check_str(iso_or_eia(achar(3) // achar(1)), 'iso', 'as many even as odd: ISO')
+        call check_str(iso_or_eia(''), 'iso', 'no punched row: ISO')
     end subroutine test_punch_eia
 
     subroutine test_view()

@@ -1,7 +1,8 @@
 """What the test suites share besides fixtures (those are in the root
 conftest.py): where the examples are, what a program must never print, a
-runner, job sheets read and written, and the coverage check of a package's
-tapes against its deck (the oracle's decoder, simulator and raster)."""
+runner, job sheets read and written, the blocks of a seed 004 program, and
+the coverage check of a package's tapes against its deck (the oracle's
+decoder, simulator and raster)."""
 
 from __future__ import annotations
 
@@ -53,6 +54,26 @@ def run(exe: Path, *args: str | Path, check: int | None = None) -> subprocess.Co
         assert proc.returncode == check, (args, proc.returncode, proc.stdout[-2000:],
                                           proc.stderr.decode("latin-1"))
     return proc
+
+
+def iso_programs(text: str) -> list[list[str]]:
+    """The blocks of each program of a text of seed 004's block format (as
+    `em703 gcode --dialect iso-1970s` writes it, in any kind of frame), the
+    comments and % lines aside; every program is closed by its %."""
+    progs: list[list[str]] = []
+    cur: list[str] | None = None
+    assert text.endswith("%\n"), text[-200:]
+    for line in text.split("\n")[:-1]:
+        if line == "%":
+            if cur is None:
+                cur = []
+            else:
+                progs.append(cur)
+                cur = None
+        elif cur is not None and not line.startswith("("):
+            cur.append(line)
+    assert cur is None
+    return progs
 
 
 def keys(text: str) -> dict[str, str]:

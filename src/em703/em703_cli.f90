@@ -366,7 +366,8 @@ contains
             'table; and no two G or M codes of one group in a block ("ошибка', &
             'перфоленты": G00-G09, G10-G39, G40-G59, G60-G79, G80-G99; M00/M02,', &
             'M03-M05, M06, M38-M40). Prints "FILE: P programs, B blocks, no tape', &
-            'error", or a line "FILE: block Nnnn (line L): ..." for each fault.', &
+            'error", or a line "FILE: block Nnnn (line L): ..." for each fault. A', &
+            'tape''s blank rows and delete rows (rows rubbed out) are skipped.', &
             '', &
             '  --frame F   the document''s kind of frame: address (default, the words', &
             '              with their letters), fixed (the slots N G G X Y Z I J F T M', &

@@ -17,7 +17,7 @@ module em703_commands
     use em703_gcode, only: gcode_program
     use em703_gerber, only: gerber_image
     use em703_drill, only: hole_t, find_holes, drill_program
-    use em703_punch, only: punch_text, eia_char
+    use em703_punch, only: punch_text, eia_char, iso_or_eia, ISO_DELETE, EIA_DELETE
     use em703_view, only: view_tape, guess_code
     use em703_split, only: frames_needed, split_frame, split_equal
     use em703_html, only: html_job
@@ -641,40 +641,50 @@ contains
     !> frame ("address", "fixed", "variable"), as text or as a tape image
     !> (a byte 0 or above 127): ISO when most punched rows have an even
     !> number of holes (track 8 dropped), else EIA (read back to ASCII, the
-    !> letters upper case); blank rows skipped, a row of the wrong parity or
-    !> no EIA code an error. Checked block by block (em703_iso).
+    !> letters upper case); blank rows and delete rows (a row rubbed out)
+    !> skipped, a row of the wrong parity or no EIA code an error. Checked
+    !> block by block (em703_iso).
     integer function run_check(path, frame) result(status)
         character(len=*), intent(in) :: path, frame
-        character(len=:), allocatable :: bytes, prog, tmp, lines
+        character(len=:), allocatable :: bytes, prog, tmp, lines, why
         type(text_t) :: msgs, text
-        integer :: i, c, n, nerr, nprog, nblocks, k, j, even, odd
+        integer :: i, c, n, nerr, nprog, nblocks, k, j, high, nl
         logical :: tape, eia
         call read_tape(path, bytes, status)
         if (status /= EXIT_OK) return
-        tape = .false.
-        even = 0
-        odd = 0
+        tape = index(bytes, achar(0)) > 0
+        high = 0
+        nl = 0
         do i = 1, len(bytes)
             c = iachar(bytes(i:i))
-            if (c == 0 .or. c > 127) tape = .true.
-            if (c == 0) cycle
-            if (mod(popcnt(c), 2) == 0) then
-                even = even + 1
-            else
-                odd = odd + 1
+            if (c > 127) then
+                high = i
+                exit
             end if
+            if (c == 10) nl = nl + 1
         end do
-        eia = odd > even
+        eia = iso_or_eia(bytes) == 'eia'
+        ! a file without a blank row is a tape image for its rows with track 8
+        ! (bytes above 127), which a text that is not ASCII also has (UTF-8
+        ! letters in a comment, say): a row's fault then says why the file was
+        ! read as a tape
+        why = ''
+        if (.not. tape .and. high > 0) then
+            tape = .true.
+            why = ' (read as a tape image for its bytes above 127, the first at row ' // &
+                  str(high) // ', line ' // str(nl + 1) // ' as text: ' // &
+                  'a program as text must be ASCII)'
+        end if
         if (tape) then
             allocate(character(len=len(bytes)) :: prog)
             n = 0
             do i = 1, len(bytes)
                 c = iachar(bytes(i:i))
-                if (c == 0) cycle
+                if (c == 0 .or. c == merge(EIA_DELETE, ISO_DELETE, eia)) cycle
                 if (eia) then
                     if (mod(popcnt(c), 2) == 0) then
                         call say(path // ': row ' // str(i) // ': parity error (even number of ' // &
-                                 'holes): not an EIA tape, or a misread row')
+                                 'holes): not an EIA tape, or a misread row' // why)
                         status = EXIT_INPUT
                         return
                     end if
@@ -682,14 +692,14 @@ contains
                     if (c < 0) then
                         call say(path // ': row ' // str(i) // ': octal ' // &
                                  octal(iachar(bytes(i:i)), 3) // ' is no EIA RS-244 code: not an ' // &
-                                 'EIA tape, or a misread row')
+                                 'EIA tape, or a misread row' // why)
                         status = EXIT_INPUT
                         return
                     end if
                 else
                     if (mod(popcnt(c), 2) == 1) then
                         call say(path // ': row ' // str(i) // ': parity error (odd number of ' // &
-                                 'holes): not an ISO tape, or a misread row')
+                                 'holes): not an ISO tape, or a misread row' // why)
                         status = EXIT_INPUT
                         return
                     end if

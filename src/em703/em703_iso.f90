@@ -55,7 +55,7 @@ module em703_iso
                          SEG_ARC, SEG_DOT, SEG_RAISE, LINE_SPEED, ARC_SPEED
     use em703_gcode, only: chord_count, plain => clean
     use em703_split, only: frames_needed, split_frame
-    use base_text, only: text_t, str
+    use base_text, only: text_t, str, octal
     use base_error, only: error_t
     implicit none
     private
@@ -81,6 +81,8 @@ module em703_iso
     character(len=*), parameter :: NO_MOVE = '+000000', TAB = achar(9)
     !> The kinds of frame.
     integer, parameter, public :: FRAME_ADDRESS = 0, FRAME_FIXED = 1, FRAME_VARIABLE = 2
+    !> The most characters of a program a message shows (then "...").
+    integer, parameter :: SHOWN_MAX = 20
 
     type :: state_t
         integer :: n = 0                 !< last block number of this program
@@ -405,6 +407,42 @@ contains
         end select
     end subroutine move
 
+    !> Characters of a program for a message: the first SHOWN_MAX of them,
+    !> then "..." when there are more; a byte that is not a printable ASCII
+    !> character (below 32, 127, above 127) shown as its octal code in angle
+    !> brackets, the code em703 view prints for its row: <011> a TAB, <177>
+    !> a delete. Built in one pass into a string of the length it will have,
+    !> so that a line of any length costs a message of at most
+    !> 5 * SHOWN_MAX + 3 characters and nothing reaches the terminal raw.
+    function shown(s) result(t)
+        character(len=*), intent(in) :: s
+        character(len=:), allocatable :: t
+        integer :: i, m, n
+        m = min(len(s), SHOWN_MAX)
+        n = m
+        do i = 1, m
+            if (.not. printable(s(i:i))) n = n + 4
+        end do
+        if (len(s) > m) n = n + 3
+        allocate(character(len=n) :: t)
+        n = 0
+        do i = 1, m
+            if (printable(s(i:i))) then
+                t(n + 1:n + 1) = s(i:i)
+                n = n + 1
+            else
+                t(n + 1:n + 5) = '<' // octal(iachar(s(i:i)), 3) // '>'
+                n = n + 5
+            end if
+        end do
+        if (len(s) > m) t(n + 1:n + 3) = '...'
+    end function shown
+
+    pure logical function printable(ch)
+        character, intent(in) :: ch
+        printable = iachar(ch) >= 32 .and. iachar(ch) <= 126
+    end function printable
+
     ! ------------------------------------------------------------------
     !> The group of G code g (0..99): 1 G00-G09, 2 G10-G39, 3 G40-G59,
     !> 4 G60-G79, 5 G80-G99.
@@ -501,21 +539,6 @@ contains
             end if
         end subroutine read_line
 
-        !> s for a message, a TAB shown as <TAB>.
-        function shown(s) result(t)
-            character(len=*), intent(in) :: s
-            character(len=:), allocatable :: t
-            integer :: i
-            t = ''
-            do i = 1, len(s)
-                if (s(i:i) == TAB) then
-                    t = t // '<TAB>'
-                else
-                    t = t // s(i:i)
-                end if
-            end do
-        end function shown
-
         !> The block number of a frame for its messages (0: none readable).
         integer function number_of(s) result(n)
             character(len=*), intent(in) :: s
@@ -597,9 +620,16 @@ contains
                 where = 'slot ' // trim(SLOT_NAME(k)) // ' (columns ' // str(c) // '-' // &
                         str(c + SLOT_WIDTH(k) - 1) // ')'
                 if (c + SLOT_WIDTH(k) - 1 > len(s)) then
+                    if (c <= len(s)) then
+                        why = 'it ends in ' // where // ', which is cut short'
+                    else if (k == NSLOTS) then
+                        why = where // ' is missing'
+                    else
+                        why = 'slots ' // trim(SLOT_NAME(k)) // ' to ' // trim(SLOT_NAME(NSLOTS)) // &
+                              ' (columns ' // str(c) // '-' // str(FIXED_LENGTH) // ') are missing'
+                    end if
                     call fault(n, 'a fixed frame has ' // str(FIXED_LENGTH) // ' characters, ' // &
-                        'this one ' // str(len(s)) // ': it ends in ' // where // ', which is ' // &
-                        'cut short' // hint)
+                        'this one ' // str(len(s)) // ': ' // why // hint)
                     return
                 end if
                 if (.not. slot_ok(k, s(c:c + SLOT_WIDTH(k) - 1), why)) then
@@ -613,7 +643,7 @@ contains
             end do
             if (len(s) > FIXED_LENGTH) then
                 call fault(n, 'a fixed frame has ' // str(FIXED_LENGTH) // ' characters, this ' // &
-                    'one ' // str(len(s)) // ': "' // shown(s(c:min(len(s), c + 19))) // &
+                    'one ' // str(len(s)) // ': "' // shown(s(c:)) // &
                     '" after slot M (from column ' // str(c) // ')' // hint)
                 return
             end if
@@ -632,7 +662,8 @@ contains
             n = number_of(s)
             if (s(1:1) == 'N') then
                 call fault(n, 'a variable frame begins with its number, three digits, not "' // &
-                           s(1:min(4, len(s))) // '" (a letter address: an address frame? see --frame)')
+                           shown(s(1:min(4, len(s)))) // '" (a letter address: an address frame? ' // &
+                           'see --frame)')
                 return
             end if
             v = prev
@@ -657,8 +688,13 @@ contains
                         return
                     end if
                 else if (.not. slot_ok(k, s(p:q - 1), why)) then
-                    if (q - p > SLOT_WIDTH(k)) why = why // ' (' // str(q - p) // ' characters, ' // &
-                        str(SLOT_WIDTH(k)) // ' wanted: a TAB missing?)'
+                    if (k == S_N .and. q > len(s) .and. len(s) == FIXED_LENGTH) then
+                        why = why // ' (' // str(q - p) // ' characters and no TAB, a fixed ' // &
+                            'frame''s width: a fixed frame? see --frame)'
+                    else if (q - p > SLOT_WIDTH(k)) then
+                        why = why // ' (' // str(q - p) // ' characters, ' // str(SLOT_WIDTH(k)) // &
+                            ' wanted: a TAB missing?)'
+                    end if
                     call fault(n, where // ' "' // shown(s(p:q - 1)) // '" ' // why)
                     return
                 else
@@ -737,7 +773,8 @@ contains
                                '" (no letter: a fixed or a variable frame? see --frame)')
                     return
                 end if
-                call fault(0, 'a block begins with N and three digits, not "' // s(1:min(4, len(s))) // '"')
+                call fault(0, 'a block begins with N and three digits, not "' // &
+                           shown(s(1:min(4, len(s)))) // '"')
                 return
             end if
             read (s(2:4), *) n
@@ -761,7 +798,7 @@ contains
                 a = s(p:p)
                 rank = index(ORDER, a)
                 if (rank <= 1) then
-                    call fault(n, 'no address "' // a // '" in the block format')
+                    call fault(n, 'no address "' // shown(a) // '" in the block format')
                     return
                 end if
                 q = p + 1
@@ -771,7 +808,8 @@ contains
                 end do
                 ! the word is s(p:q-1)
                 if (rank < last_rank .or. (rank == last_rank .and. a /= 'G' .and. a /= 'M')) then
-                    call fault(n, 'the word ' // s(p:q - 1) // ' is out of the order N G X Y Z I J K F S T M')
+                    call fault(n, 'the word ' // shown(s(p:q - 1)) // ' is out of the order ' // &
+                               'N G X Y Z I J K F S T M')
                     return
                 end if
                 last_rank = rank
@@ -779,12 +817,12 @@ contains
                 case ('X', 'Y', 'Z', 'I', 'J', 'K')
                     if (q - p /= 8 .or. index('+-', s(p + 1:p + 1)) == 0 .or. &
                         verify(s(p + 2:q - 1), '0123456789') > 0) then
-                        call fault(n, 'the word ' // s(p:q - 1) // ' is not a sign and six digits')
+                        call fault(n, 'the word ' // shown(s(p:q - 1)) // ' is not a sign and six digits')
                         return
                     end if
                 case default
                     if (q - p /= 3 .or. verify(s(p + 1:q - 1), '0123456789') > 0) then
-                        call fault(n, 'the word ' // s(p:q - 1) // ' is not two digits')
+                        call fault(n, 'the word ' // shown(s(p:q - 1)) // ' is not two digits')
                         return
                     end if
                     read (s(p + 1:q - 1), *) v

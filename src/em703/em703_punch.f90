@@ -24,10 +24,14 @@ module em703_punch
     use base_text, only: octal
     implicit none
     private
-    public :: punch_text, iso_row, eia_row, iso_meaning, eia_meaning, holes, eia_char
+    public :: punch_text, iso_row, eia_row, iso_meaning, eia_meaning, holes, eia_char, iso_or_eia
 
     integer, parameter, public :: LEADER = 20
     integer, parameter, public :: EIA_EOB = 128
+    !> The delete rows, how a punch operator rubs out a row (every hole of
+    !> the code punched over it): ISO DEL with its parity track, all eight
+    !> tracks; EIA tracks 1-7. A reader skips them.
+    integer, parameter, public :: ISO_DELETE = 255, EIA_DELETE = 127
     integer, parameter :: TRACK5 = 16, TRACK8 = 128
 
 contains
@@ -112,6 +116,27 @@ contains
         end do
         c = -1
     end function eia_char
+
+    !> The code of an 8-track tape image (one byte a row): "iso" when at
+    !> least as many of its punched rows have an even number of holes as an
+    !> odd number, else "eia". Blank rows do not count.
+    function iso_or_eia(data) result(code)
+        character(len=*), intent(in) :: data
+        character(len=:), allocatable :: code
+        integer :: i, even, odd, v
+        even = 0
+        odd = 0
+        do i = 1, len(data)
+            v = iachar(data(i:i))
+            if (v == 0) cycle
+            if (mod(holes(v), 2) == 0) then
+                even = even + 1
+            else
+                odd = odd + 1
+            end if
+        end do
+        code = merge('iso', 'eia', even >= odd)
+    end function iso_or_eia
 
     !> Punch text as a tape image in code "iso" or "eia".
     subroutine punch_text(text, code, rows, err)
@@ -214,26 +239,20 @@ contains
             s = 'parity error (even number of holes)'
             return
         end if
-        if (v == 127) then
+        if (v == EIA_DELETE) then
             s = 'delete'
             return
         end if
-        do c = 9, 122
-            if (c >= iachar('A') .and. c <= iachar('Z')) cycle     ! the letters once
-            if (eia_row(c) == v) then
-                select case (c)
-                case (9); s = 'tab'
-                case (32); s = 'space'
-                case (iachar('%')); s = '% (rewind stop)'
-                case (iachar('(')); s = '( (control out)'
-                case (iachar(')')); s = ') (control in)'
-                case (iachar('a'):iachar('z')); s = achar(c - 32)
-                case default; s = achar(c)
-                end select
-                return
-            end if
-        end do
-        s = 'not an EIA code'
+        c = eia_char(v)
+        select case (c)
+        case (-1); s = 'not an EIA code'
+        case (9); s = 'tab'
+        case (32); s = 'space'
+        case (iachar('%')); s = '% (rewind stop)'
+        case (iachar('(')); s = '( (control out)'
+        case (iachar(')')); s = ') (control in)'
+        case default; s = achar(c)
+        end select
     end function eia_meaning
 
 end module em703_punch

@@ -6,7 +6,7 @@
 module em703_view
     use em703_codec, only: DIGITS_8, DIGITS_K, ROW_GM, ROW_MINUS, ROW_X, ROW_Y, ROW_DX, &
                            ROW_DY, ROW_CYC, ROW_K, ROW_KK
-    use em703_punch, only: iso_meaning, eia_meaning, holes
+    use em703_punch, only: iso_meaning, eia_meaning, iso_or_eia
     use base_text, only: text_t, str, octal
     implicit none
     private
@@ -46,27 +46,16 @@ contains
     end subroutine view_rows
 
     !> "em703" when every row fits 5 tracks; otherwise "iso" when most punched
-    !> rows have an even number of holes, "eia" when most have an odd number.
+    !> rows have an even number of holes, "eia" when most have an odd number
+    !> (em703_punch's iso_or_eia).
     function guess_bytes(data) result(code)
         character(len=*), intent(in) :: data
         character(len=:), allocatable :: code
-        integer :: i, even, odd, v
         if (all_five(data)) then
             code = 'em703'
             return
         end if
-        even = 0
-        odd = 0
-        do i = 1, len(data)
-            v = iachar(data(i:i))
-            if (v == 0) cycle
-            if (mod(holes(v), 2) == 0) then
-                even = even + 1
-            else
-                odd = odd + 1
-            end if
-        end do
-        code = merge('iso', 'eia', even >= odd)
+        code = iso_or_eia(data)
     end function guess_bytes
 
     logical function all_five(data)

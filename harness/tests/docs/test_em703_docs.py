@@ -2,7 +2,9 @@
 `$ em703 ...` line is run in a directory holding TENZOR's output for every
 deck of examples/ in `out/`, and what it prints (standard output, then
 standard error) is what the page shows; a line `...` stands for lines left
-out."""
+out. The sizes of seed 004's three kinds of frame that TOOLS.md,
+SEED004-TAPE-CODES.md and README.md quote are what `em703 gcode --dialect
+iso-1970s` writes for the example jobs."""
 
 from __future__ import annotations
 
@@ -14,7 +16,7 @@ from pathlib import Path
 
 import pytest
 
-from harness.tests.helpers import ROOT
+from harness.tests.helpers import ROOT, iso_programs
 from harness.tape import Frame, encode
 
 
@@ -67,3 +69,63 @@ def test_the_examples_on_the_page_are_what_em703_prints(em703_exe, workdir, page
                 (page, command, got)
         else:
             assert got == want, (page, command, "\n".join(got))
+
+
+def _frame_sizes(em703_exe, job: Path, frame: str) -> tuple[int, int, int]:
+    """(programs, blocks, rows of tape for the blocks) of a job's seed 004
+    program in frames of a kind: a row a character and one for the end of
+    block; comments and % lines aside."""
+    proc = subprocess.run([str(em703_exe), "gcode", "--dialect", "iso-1970s", "--frame", frame,
+                           str(job)], capture_output=True, timeout=120)
+    assert proc.returncode == 0, proc.stderr
+    progs = iso_programs(proc.stdout.decode("ascii"))
+    blocks = [b for prog in progs for b in prog]
+    return len(progs), len(blocks), sum(len(b) + 1 for b in blocks)
+
+
+def _number(text: str) -> int:
+    return int(text.replace(" ", ""))
+
+
+def test_the_sizes_of_the_three_frames_are_what_em703_writes(em703_exe, example_jobs) -> None:
+    jobs = {j.stem: j for j in example_jobs}
+    sizes = {name: {frame: _frame_sizes(em703_exe, jobs[name], frame)
+                    for frame in ("address", "fixed", "variable")}
+             for name in jobs}
+
+    def row(name: str) -> list[int]:
+        """blocks, then the rows in address, fixed and variable frames"""
+        got = sizes[name]
+        assert got["address"][:2] == got["fixed"][:2] == got["variable"][:2], name
+        return [got["address"][1]] + [got[f][2] for f in ("address", "fixed", "variable")]
+
+    # SEED004-TAPE-CODES.md: the table of sizes, a job named in its first cell
+    page = (ROOT / "docs" / "SEED004-TAPE-CODES.md").read_text()
+    head = "| program | blocks | address | fixed | variable |\n|---|---|---|---|---|\n"
+    assert page.count(head) == 1
+    table = page.split(head, 1)[1].split("\n\n", 1)[0].splitlines()
+    assert len(table) >= 4
+    for line in table:
+        cells = [c.strip() for c in line.strip("|").split("|")]
+        name = re.search(r"[A-Z][A-Z0-9-]*[A-Z0-9]", cells[0]).group()
+        assert [_number(c) for c in cells[1:]] == row(name), (line, row(name))
+    # TOOLS.md: the demo board's blocks and programs, then the same sizes in prose
+    tools = re.sub(r"\s+", " ", (ROOT / "docs" / "TOOLS.md").read_text())
+    m = re.search(r"The demo board's job \(([A-Z0-9-]+)\) runs (\d+) blocks: (\w+) programs", tools)
+    assert m, "TOOLS.md no longer names the demo board's blocks"
+    demo = m.group(1)
+    words = ["one", "two", "three", "four", "five"]
+    assert (_number(m.group(2)), words.index(m.group(3)) + 1) == \
+        (row(demo)[0], sizes[demo]["address"][0])
+    m = re.search(r"On the demo board \((\d+) blocks\), the blocks take ([\d ]+) rows of tape in "
+                  r"address frames, ([\d ]+) in fixed frames, ([\d ]+) in variable ones; on "
+                  r"`([A-Z0-9-]+)`, (\d+), (\d+) and (\d+)", tools)
+    assert m, "TOOLS.md no longer gives the sizes of the three frames"
+    assert [_number(g) for g in m.groups()[:4]] == row(demo)
+    assert [_number(g) for g in m.groups()[5:]] == row(m.group(5))[1:]
+    # README: a fixed frame's characters and rows
+    m = re.search(r"--frame fixed: (\d+) characters \+ end of block, (\d+) rows\)",
+                  (ROOT / "README.md").read_text())
+    assert m, "README.md no longer gives the fixed frame's length"
+    assert (int(m.group(2)) - 1, int(m.group(2))) == (int(m.group(1)), row(demo)[2] // row(demo)[0])
+    assert row(demo)[2] % row(demo)[0] == 0

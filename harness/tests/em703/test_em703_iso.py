@@ -11,6 +11,8 @@ import re
 import subprocess
 from pathlib import Path
 
+from harness.tests.helpers import iso_programs
+
 BLOCK = re.compile(r"N\d{3}( [GXYZIJFSTM][+-]?\d+)*$")
 
 
@@ -42,21 +44,6 @@ def linuxcnc_points(text: str) -> list[tuple[int, int]]:
     return out
 
 
-def _programs(text: str) -> list[list[str]]:
-    progs, cur = [], None
-    for line in text.splitlines():
-        if line == "%":
-            if cur is None:
-                cur = []
-            else:
-                progs.append(cur)
-                cur = None
-        elif cur is not None and not line.startswith("("):
-            cur.append(line)
-    assert cur is None
-    return progs
-
-
 def test_example_programs(em703_exe, example_jobs, example_tapes, tmp_path) -> None:
     for src in list(example_jobs) + list(example_tapes)[:6]:
         iso = _em(em703_exe, "gcode", "--dialect", "iso-1970s", src)
@@ -66,7 +53,7 @@ def test_example_programs(em703_exe, example_jobs, example_tapes, tmp_path) -> N
         assert again.stdout == iso.stdout                       # byte-identical
         for line in text.splitlines():
             assert line == "%" or line.startswith("(") or BLOCK.match(line), (src, line)
-        progs = _programs(text)
+        progs = iso_programs(text)
         for prog in progs:
             nums = [int(b[1:4]) for b in prog]
             assert nums == list(range(1, len(nums) + 1)) and len(nums) <= 999
@@ -95,7 +82,7 @@ def test_long_program_is_cut_into_complete_programs(em703_exe, example_jobs) -> 
     biggest = max(example_jobs, key=lambda j: len(_em(em703_exe, "gcode", "--dialect",
                                                         "iso-1970s", j).stdout))
     text = _em(em703_exe, "gcode", "--dialect", "iso-1970s", biggest).stdout.decode()
-    progs = _programs(text)
+    progs = iso_programs(text)
     assert len(progs) >= 2
     for prog in progs:
         assert 1 <= len(prog) <= 999 and prog[0] == "N001 G17" and prog[-1].endswith(" M02")
@@ -140,3 +127,83 @@ def test_check_of_a_tape_with_a_parity_error(em703_exe, tmp_path) -> None:
     assert proc.returncode == 1
     assert proc.stderr.decode() == f"{tape}: row 26: parity error (odd number of holes): not an " \
                                    "ISO tape, or a misread row\n"
+
+
+def test_check_shows_control_characters_in_octal(em703_exe, tmp_path) -> None:
+    """A byte of the program that is not a printable character reaches a
+    message as its octal code in angle brackets (the code `em703 view`
+    prints for its row), never raw: a delete, an ESC, a CR in the middle of
+    a line, a TAB; nothing else below 32 is on standard error."""
+    cases = [
+        ("address", "N001 G17\x7f\x1b", 'block N001 (line 2): the word G17<177><033> is not two '
+                                        "digits"),
+        ("address", "N001 G17\rX+000000", "block N001 (line 2): the word G17<015> is not two digits"),
+        ("address", "N001 \x1b[2J", 'block N001 (line 2): no address "<033>" in the block format'),
+        ("address", "001\x07", 'line 2: a block begins with N and three digits, not "001<007>" '
+                              "(no letter: a fixed or a variable frame? see --frame)"),
+        ("variable", "N\x0c01", 'line 2: a variable frame begins with its number, three digits, '
+                               'not "N<014>01" (a letter address: an address frame? see --frame)'),
+        ("variable", "001\t0\x7f", 'block N001 (line 2): slot G00-G09 (2nd slot, columns 5-6) '
+                                   '"0<177>" is not two digits (nor two spaces, no word)'),
+        ("fixed", "001\t" + "0" * 44, 'block N001 (line 2): slot G00-G09 (columns 4-5) "<011>0" has '
+                                    "a TAB in it (a TAB at column 4: a variable frame? see --frame)"),
+    ]
+    for frame, block, want in cases:
+        prog = tmp_path / "c.iso"
+        prog.write_bytes(f"%\n{block}\n%\n".encode("ascii"))
+        proc = _em(em703_exe, "check", "--frame", frame, prog)
+        assert proc.returncode == 1 and proc.stdout == b"", block
+        assert proc.stderr == f"{prog}: {want}\n".encode("ascii"), (block, proc.stderr)
+
+
+def test_check_skips_delete_rows(em703_exe, tmp_path) -> None:
+    """A punch operator rubs out a row by punching every hole of the code over
+    it: a delete row, all eight tracks on ISO tape (0377, DEL with its parity
+    track), tracks 1-7 on EIA (0177), as `em703 view` names them. The reader
+    skips it as it skips a blank row, on both tapes; a delete row of one code
+    on the other's tape is still a parity error."""
+    prog = tmp_path / "p.iso"
+    prog.write_text("%\nN001 G17\nN002 M02\n%\n")
+    for code, delete, other in (("iso", 0o377, 0o177), ("eia", 0o177, 0o377)):
+        tape = tmp_path / f"p.{code}.ptp"
+        assert _em(em703_exe, "punch", "--code", code, prog, "-o", tape).returncode == 0
+        good = _em(em703_exe, "check", tape)
+        assert good.returncode == 0, good.stderr
+        data = bytearray(tape.read_bytes())
+        # a wrong digit after the 1 of N001, rubbed out; two more delete rows
+        # at the start of the program and inside N002
+        data[26:26] = bytes([delete])
+        data[22:22] = bytes([delete])
+        data[33:33] = bytes([delete])
+        tape.write_bytes(bytes(data))
+        view = _em(em703_exe, "view", tape, "--code", code, "--rows", "27:28").stdout.decode()
+        assert f"| {delete:03o}   delete" in view, view
+        back = _em(em703_exe, "check", tape)
+        assert back.returncode == 0, back.stderr
+        assert back.stdout.split(b": ", 1)[1] == good.stdout.split(b": ", 1)[1] == \
+            b"1 program, 2 blocks, no tape error\n"
+        data[27] = other
+        tape.write_bytes(bytes(data))
+        bad = _em(em703_exe, "check", tape)
+        assert bad.returncode == 1 and b"row 28: parity error" in bad.stderr, bad.stderr
+
+
+def test_a_text_that_is_not_ascii_is_read_as_a_tape_and_says_why(em703_exe, tmp_path) -> None:
+    """A byte above 127 is a row with track 8: a file that has one is read as
+    a tape image, a text of UTF-8 letters too. Its fault then says so and
+    where the first such byte is, as a row and as a line of text; a tape
+    with its blank leader needs no such word."""
+    prog = tmp_path / "ru.iso"
+    prog.write_text("%\n(проверка)\nN001 G17\n%\n", encoding="utf-8")
+    proc = _em(em703_exe, "check", prog)
+    assert proc.returncode == 1 and proc.stdout == b""
+    assert proc.stderr.decode() == (
+        f"{prog}: row 2: parity error (even number of holes): not an EIA tape, or a misread row "
+        "(read as a tape image for its bytes above 127, the first at row 4, line 2 as text: a "
+        "program as text must be ASCII)\n")
+    prog.write_text("%\nN001 G17 (é)\n%\n", encoding="utf-8")
+    proc = _em(em703_exe, "check", prog)
+    assert proc.returncode == 1
+    assert proc.stderr.decode().endswith(": not an ISO tape, or a misread row (read as a tape image "
+                                         "for its bytes above 127, the first at row 13, line 2 as "
+                                         "text: a program as text must be ASCII)\n")

@@ -16,6 +16,8 @@ from __future__ import annotations
 
 import subprocess
 
+from harness.tests.helpers import iso_programs
+
 #: The slots of fixed and variable frames and their widths (em703_iso.f90).
 SLOTS = [("N", 3), ("G", 2), ("G", 2), ("X", 7), ("Y", 7), ("Z", 7), ("I", 7), ("J", 7),
          ("F", 2), ("T", 2), ("M", 2)]
@@ -34,22 +36,6 @@ def _gcode(exe, src, frame=None) -> str:
     proc = _em(exe, *args)
     assert proc.returncode == 0, proc.stderr
     return proc.stdout.decode("ascii")
-
-
-def _programs(text: str) -> list[list[str]]:
-    """The blocks of each program (comments and % lines aside)."""
-    progs, cur = [], None
-    for line in text.split("\n")[:-1]:
-        if line == "%":
-            if cur is None:
-                cur = []
-            else:
-                progs.append(cur)
-                cur = None
-        elif cur is not None and not line.startswith("("):
-            cur.append(line)
-    assert cur is None and text.endswith("%\n")
-    return progs
 
 
 def _empty(k: int) -> str:
@@ -120,7 +106,7 @@ def test_three_frames_carry_the_same_blocks(em703_exe, example_jobs, example_tap
         assert address.encode() == plain                    # --frame address is today's
         fixed = _gcode(em703_exe, src, "fixed")
         variable = _gcode(em703_exe, src, "variable")
-        pa, pf, pv = _programs(address), _programs(fixed), _programs(variable)
+        pa, pf, pv = iso_programs(address), iso_programs(fixed), iso_programs(variable)
         assert len(pa) == len(pf) == len(pv) >= 1
         for a, f, v in zip(pa, pf, pv):
             assert len(a) == len(f) == len(v)
@@ -159,8 +145,8 @@ def test_three_frames_carry_the_same_blocks(em703_exe, example_jobs, example_tap
 def test_the_variable_frame_leaves_out_what_is_unchanged(em703_exe, example_jobs):
     """EXAMPLE3: the layout of docs/TOOLS.md, a TAB for every unchanged slot."""
     job = next(j for j in example_jobs if j.name == "EXAMPLE3.job")
-    variable = _programs(_gcode(em703_exe, job, "variable"))[0]
-    fixed = _programs(_gcode(em703_exe, job, "fixed"))[0]
+    variable = iso_programs(_gcode(em703_exe, job, "variable"))[0]
+    fixed = iso_programs(_gcode(em703_exe, job, "fixed"))[0]
     assert variable[0] == "001\t\t17"
     assert fixed[0] == "001  17" + "+000000" * 5 + "      "
     # T02 M06 after T01 M06: only the T slot changes, M06 stays in store
@@ -213,11 +199,50 @@ def test_variable_frames_at_fault(em703_exe, tmp_path):
         assert got[0] == f"{prog}: {want}", (bad, got)
 
 
+def test_a_slot_of_megabytes_is_refused_at_once_in_one_short_line(em703_exe, tmp_path):
+    """A message shows at most 20 characters of the program, then "...": a
+    variable frame whose slot holds 2 MB of digits (its TABs lost), and an
+    address block of one such word, are each refused with one short line.
+    (The slot was once copied into the message a character at a time, which
+    took minutes; the timeout makes such a regression fail, not hang.)"""
+    digits = "1" * 2_000_000
+    cases = [
+        ("variable", "001\t" + digits,
+         'block N001 (line 2): slot G00-G09 (2nd slot, columns 5-2000004) "' + "1" * 20 +
+         '..." is not two digits (nor two spaces, no word) (2000000 characters, 2 wanted: a TAB '
+         'missing?)'),
+        ("address", "N001 X" + digits,
+         "block N001 (line 2): the word X" + "1" * 19 + "... is not a sign and six digits"),
+        ("fixed", "001  17" + "+000000" * 5 + "      " + digits,
+         'block N001 (line 2): a fixed frame has 48 characters, this one 2000048: "' + "1" * 20 +
+         '..." after slot M (from column 49)'),
+    ]
+    for frame, block, want in cases:
+        prog = tmp_path / f"long.{frame}"
+        _write(prog, [block])
+        proc = subprocess.run([str(em703_exe), "check", "--frame", frame, str(prog)],
+                              capture_output=True, timeout=60)
+        assert proc.returncode == 1 and proc.stdout == b"", frame
+        assert proc.stderr.decode("ascii") == f"{prog}: {want}\n", frame
+        assert len(proc.stderr) < 300 + len(str(prog))
+
+
 def test_variable_slots_resolve_before_the_group_check(em703_exe, tmp_path):
     """An empty slot is the previous block's value: the checks run on the
     resolved block (M03 in store and M05 cannot clash: one M slot), and the
     block numbers must still increase."""
     prog = tmp_path / "v.iso"
+    # M03, then M05 in the M slot (M03 is replaced, not added), then an empty
+    # M slot (M05 again): no clash of the spindle's group
+    _write(prog, ["001\t\t17", "002" + TAB * 10 + "03", "003" + TAB * 10 + "05", "004\t01"])
+    ok = _em(em703_exe, "check", "--frame", "variable", prog)
+    assert ok.returncode == 0 and ok.stdout == f"{prog}: 1 program, 4 blocks, no tape error\n".encode()
+    # written as address blocks, the resolved blocks: M03 and M05 never meet
+    _write(prog, ["N001 G17", "N002 G17 M03", "N003 G17 M05", "N004 G01 G17 M05"])
+    assert _em(em703_exe, "check", prog).returncode == 0
+    _write(prog, ["N001 G17", "N002 M03 M05"])
+    clash = _em(em703_exe, "check", prog)
+    assert clash.returncode == 1 and b"M03 and M05 are of one group" in clash.stderr
     _write(prog, ["001\t\t17", "002\t01\t\t\t\t\t\t\t\t\t07", "002\t00"])
     proc = _em(em703_exe, "check", "--frame", "variable", prog)
     assert proc.returncode == 1
@@ -245,10 +270,16 @@ def test_fixed_frames_of_the_wrong_width_are_refused(em703_exe, tmp_path):
             'block N002 (line 3): a fixed frame has 48 characters, this one 49: "0" after slot M '
             "(from column 49)",
         good[:-2]:                   # the trailing M slot lost (an editor's trim)
-            "block N002 (line 3): a fixed frame has 48 characters, this one 46: it ends in slot M "
+            "block N002 (line 3): a fixed frame has 48 characters, this one 46: slot M (columns "
+            "47-48) is missing",
+        good[:-4]:                   # T and M lost
+            "block N002 (line 3): a fixed frame has 48 characters, this one 44: slots T to M "
+            "(columns 45-48) are missing",
+        good[:-1]:                   # half of M lost
+            "block N002 (line 3): a fixed frame has 48 characters, this one 47: it ends in slot M "
             "(columns 47-48), which is cut short",
         good[:3] + "\t" + good[3:]:
-            'block N002 (line 3): slot G00-G09 (columns 4-5) "<TAB>0" has a TAB in it; the frame '
+            'block N002 (line 3): slot G00-G09 (columns 4-5) "<011>0" has a TAB in it; the frame '
             "has 49 characters, a fixed frame 48 (a TAB at column 4: a variable frame? see --frame)",
         good[:3] + "17" + good[5:]:
             'block N002 (line 3): slot G00-G09 (columns 4-5) "17" is G17, not of G00-G09, the '
@@ -264,15 +295,39 @@ def test_fixed_frames_of_the_wrong_width_are_refused(em703_exe, tmp_path):
         assert proc.stderr.decode("utf-8").splitlines() == [f"{prog}: {want}"], bad
 
 
-def test_a_fixed_program_checked_as_address_says_so(em703_exe, example_jobs, tmp_path):
+def test_a_program_checked_in_the_wrong_frame_says_so_at_its_first_block(em703_exe, example_jobs,
+                                                                       tmp_path):
+    """docs/TOOLS.md: "A program checked in the wrong kind of frame says so at
+    its first block", for each of the six pairs of kinds."""
     job = next(j for j in example_jobs if j.name == "EXAMPLE3.job")
-    prog = tmp_path / "f.iso"
-    prog.write_text(_gcode(em703_exe, job, "fixed"))
-    proc = _em(em703_exe, "check", prog)
-    assert proc.returncode == 1
-    first = proc.stderr.decode().splitlines()[0]
-    assert first == f'{prog}: line 5: a block begins with N and three digits, not "001 " (no ' \
-                    "letter: a fixed or a variable frame? see --frame)"
+    want = {
+        ("address", "fixed"):
+            'line 4: slot N (columns 1-3) "N00" is not three digits; the frame has 8 characters, a '
+            "fixed frame 48 (a letter address: an address frame? see --frame)",
+        ("address", "variable"):
+            'line 4: a variable frame begins with its number, three digits, not "N001" (a letter '
+            "address: an address frame? see --frame)",
+        ("fixed", "address"):
+            'line 5: a block begins with N and three digits, not "001 " (no letter: a fixed or a '
+            "variable frame? see --frame)",
+        ("fixed", "variable"):
+            'block N001 (line 5): slot N (1st slot, columns 1-48) "001  17+000000+00000..." is not '
+            "three digits (48 characters and no TAB, a fixed frame's width: a fixed frame? see "
+            "--frame)",
+        ("variable", "address"):
+            'line 5: a block begins with N and three digits, not "001<011>" (no letter: a fixed or '
+            "a variable frame? see --frame)",
+        ("variable", "fixed"):
+            'block N001 (line 5): slot G00-G09 (columns 4-5) "<011><011>" has a TAB in it; the frame '
+            "has 7 characters, a fixed frame 48 (a TAB at column 4: a variable frame? see --frame)",
+    }
+    for (written, checked), message in want.items():
+        prog = tmp_path / f"p.{written}"
+        prog.write_text(_gcode(em703_exe, job, written))
+        proc = _em(em703_exe, "check", "--frame", checked, prog)
+        assert proc.returncode == 1 and proc.stdout == b"", (written, checked)
+        first = proc.stderr.decode().splitlines()[0]
+        assert first == f"{prog}: {message}", (written, checked, first)
 
 
 def test_tab_on_iso_and_eia_tape(em703_exe, tmp_path):
@@ -315,8 +370,13 @@ def test_frame_on_the_command_line(em703_exe, example_tapes, tmp_path):
     bad = _em(em703_exe, "gcode", "--dialect", "iso-1970s", tape, "--frame", "tab")
     assert bad.returncode == 2
     assert b'--frame takes address, fixed or variable, not "tab"' in bad.stderr
-    bad = _em(em703_exe, "check", tmp_path / "x", "--frame", "")
-    assert bad.returncode == 2
+    prog = tmp_path / "p.iso"
+    prog.write_text("%\nN001 G17\n%\n")
+    assert _em(em703_exe, "check", prog, "--frame", "address").returncode == 0
+    bad = _em(em703_exe, "check", prog, "--frame", "")
+    assert bad.returncode == 2 and bad.stdout == b""
+    assert bad.stderr == b'em703 check: --frame takes address, fixed or variable, not "" (see em703 ' \
+                         b"check --help)\n"
     for sub in ("gcode", "check"):
         assert b"--frame" in _em(em703_exe, sub, "--help").stdout
     assert b"[--frame address|fixed|variable]" in _em(em703_exe, "--help").stdout

@@ -205,15 +205,20 @@ PIECES = ["%\n", "\n", "\t", "\t\t\t", "001", "999", "000", "N001 ", "N", "G01",
 @example(text=b"%\n001\t\t\t\t\t\t\t\t\t\t\t\t\n%\n", frame="variable")
 @example(text=b"%\n001" + b"9" * 45 + b"\n%\n", frame="fixed")
 @example(text=b"%\n\t\n001\t01\t\t+\n%", frame="variable")
+@example(text=b"%\nN001 G17\x7f\x1b\rX\n001\x7f\n%\n", frame="address")
 def test_check_any_program(em703_exe, tmp_path, text, frame):
-    """em703 check in every frame of anything, as text and punched on either tape."""
+    """em703 check in every frame of anything, as text and punched on either
+    tape; its messages are short and carry no control character raw."""
     here = fresh(tmp_path)
     (here / "p.iso").write_bytes(text)
-    em(em703_exe, here, "check", "--frame", frame, "p.iso")
+    checks = [em(em703_exe, here, "check", "--frame", frame, "p.iso")]
     for code in ("iso", "eia"):
         tape = f"p.{code}.ptp"
         if em(em703_exe, here, "punch", "--code", code, "-o", tape, "p.iso", out=tape).returncode == 0:
-            em(em703_exe, here, "check", "--frame", frame, tape)
+            checks.append(em(em703_exe, here, "check", "--frame", frame, tape))
+    for proc in checks:
+        for line in proc.stderr.split(b"\n")[:-1]:
+            assert len(line) < 400 and not any(b < 32 or b == 127 for b in line), line
 
 
 NUMBERS = ["0", "1", "-1", "9999", "10000", "99999999", "2147483647", "2147483648",
