@@ -1,7 +1,8 @@
 C=======================================================================
 C     CMEND  - AN END OF THE ITEM AT A PLACE OF THE TOUR        (SHARED)
 C     SOURCE:  RECONSTRUCTED. PLACE 0 IS WHERE THE TOUR STARTS, PLACE
-C              NITM+1 THE START POINT WHERE IT ENDS.
+C              NITM+1 THE START POINT WHERE IT ENDS. (CMOPT2 AND
+C              CMOROP WRITE THE SAME LOOK-UP OUT IN THEIR LOOPS.)
 C     IP      (INPUT)  INTEGER  THE PLACE, 0..NITM+1
 C     IWHICH  (INPUT)  INTEGER  1 = THE END THE TOOL LEAVES IT BY,
 C                               2 = THE END THE TOOL ENTERS IT BY

@@ -37,6 +37,10 @@ C     ---- /CMTWK/ WORK SPACE OF THE TOUR: GRID, NEIGHBOURS, QUEUE -----
      1               KQHD, KQN, KWORK, KWMAX, KQX, KQY, KCST, KCCN,
      2               KCEL, KSLT, KNB, KQUE, LQUE
       SAVE /CMTWK/
+C     ---- /CMTWD/ THE LENGTH FROM EACH END TO EACH OF ITS NEAR ENDS --
+      DOUBLE PRECISION DNB(MXNB, MXPT)
+      COMMON /CMTWD/ DNB
+      SAVE /CMTWD/
 C     ---- LOCAL -------------------------------------------------------
       INTEGER MXQ, MXRING, MXQEN
       PARAMETER (MXQ = 2, MXRING = 30, MXQEN = 4000)
@@ -46,6 +50,11 @@ C     ---- LOCAL -------------------------------------------------------
       DOUBLE PRECISION D, RK, NBD(MXNB), QBD(MXQ, 4), DF(MXNB), CMRBND
       LOGICAL LDONE, LOUT(4)
       EXTERNAL CMRBND
+      DOUBLE PRECISION DIST
+      INTEGER JX1, JY1, JX2, JY2
+C     THE DISTANCE OF TWO POINTS AS CMOPT2 AND CMOROP RECKON IT
+      DIST(JX1, JY1, JX2, JY2) = SQRT((DBLE(JX1) - JX2)**2 +
+     1   (DBLE(JY1) - JY2)**2)
 C
       KMAX = MAX(NGX, NGY)
 C     THE BOX OF THE ENDS: NO END LIES IN A QUADRANT BEYOND IT
@@ -167,7 +176,12 @@ C        ---- THE LIST: THE QUADRANTS' ENDS, THEN THE NEAREST OTHERS ---
    49    CONTINUE
          DO 50 J = 1, MXNB
             KNB(J, IP) = 0
-            IF (J .LE. NF) KNB(J, IP) = NBF(J)
+            DNB(J, IP) = 0.0D0
+            IF (J .LE. NF) THEN
+               KNB(J, IP) = NBF(J)
+               DNB(J, IP) = DIST(KQX(IP), KQY(IP), KQX(NBF(J)),
+     1                            KQY(NBF(J)))
+            END IF
    50    CONTINUE
    60 CONTINUE
       RETURN

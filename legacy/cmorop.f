@@ -36,6 +36,10 @@ C     ---- /CMTWK/ WORK SPACE OF THE TOUR: GRID, NEIGHBOURS, QUEUE -----
      1               KQHD, KQN, KWORK, KWMAX, KQX, KQY, KCST, KCCN,
      2               KCEL, KSLT, KNB, KQUE, LQUE
       SAVE /CMTWK/
+C     ---- /CMTWD/ THE LENGTH FROM EACH END TO EACH OF ITS NEAR ENDS --
+      DOUBLE PRECISION DNB(MXNB, MXPT)
+      COMMON /CMTWD/ DNB
+      SAVE /CMTWD/
 C     ---- /CMTWJ/ THE JOURNAL OF REVERSALS OF ONE KICK (CMKICK), AND
 C     THE LENGTH THE MOVES SINCE THE KICK HAVE TAKEN OFF THE TOUR ------
       INTEGER MXJRN
@@ -47,7 +51,7 @@ C     THE LENGTH THE MOVES SINCE THE KICK HAVE TAKEN OFF THE TOUR ------
 C     ---- LOCAL -------------------------------------------------------
       INTEGER I, J2, K, L, IEND, ID, IQ, M2, J, IC, IREV, NB, IBC,
      1        IBREV, IXS, IYS, IXE, IYE, IXP, IYP, IXN, IYN, IXC, IYC,
-     2        IXD, IYD, MS(7)
+     2        IXD, IYD, IE4, MS(7)
       LOGICAL LEXIT, LONE
       INTEGER IROLE
       DOUBLE PRECISION REM, ADD, GAIN, BEST, DIST, DPS
@@ -59,15 +63,35 @@ C
       LIMP = 0
       I = IPOS(M)
 C     THE START OF S, AND THE MOVE INTO IT
-      CALL CMEND(I, 2, IXS, IYS)
-      CALL CMEND(I - 1, 1, IXP, IYP)
+C     (CMEND'S LOOK-UPS ARE WRITTEN OUT HERE: CMOROP IS CALLED FOR
+C     EVERY ITEM THE REPAIRS LOOK AT)
+      IE4 = 2 * M - 1 + IORI(M)
+      IXS = KQX(IE4)
+      IYS = KQY(IE4)
+      IF (I .GT. 1) THEN
+         IE4 = 2 * ITOUR(I - 1) - IORI(ITOUR(I - 1))
+         IXP = KQX(IE4)
+         IYP = KQY(IE4)
+      ELSE
+         IXP = KDSX
+         IYP = KDSY
+      END IF
       DPS = DIST(IXP, IYP, IXS, IYS)
       DO 50 K = 1, 3
          J2 = I + K - 1
          IF (J2 .GT. NITM) RETURN
 C        THE END OF S, AND THE MOVE OUT OF IT
-         CALL CMEND(J2, 1, IXE, IYE)
-         CALL CMEND(J2 + 1, 2, IXN, IYN)
+         IE4 = 2 * ITOUR(J2) - IORI(ITOUR(J2))
+         IXE = KQX(IE4)
+         IYE = KQY(IE4)
+         IF (J2 .LT. NITM) THEN
+            IE4 = 2 * ITOUR(J2 + 1) - 1 + IORI(ITOUR(J2 + 1))
+            IXN = KQX(IE4)
+            IYN = KQY(IE4)
+         ELSE
+            IXN = KDTX
+            IYN = KDTY
+         END IF
          REM = DPS + DIST(IXE, IYE, IXN, IYN)
      1       - DIST(IXP, IYP, IXN, IYN)
          IF (REM .LE. 1.0D-6) GOTO 50
@@ -86,7 +110,7 @@ C        ---- CANDIDATES FROM THE NEAREST ENDS OF BOTH ENDS OF S -------
                IF (IQ .EQ. 0) GOTO 40
 C              THE NEW MOVE TO OR FROM S MUST BE SHORTER THAN WHAT
 C              TAKING S OUT SAVES; THE NEIGHBOURS ARE NEAREST FIRST
-               IF (DIST(KQX(ID), KQY(ID), KQX(IQ), KQY(IQ)) .GE. REM)
+               IF (DNB(NB, ID) .GE. REM)
      1            GOTO 40
                M2 = (IQ + 1) / 2
                J = IPOS(M2)
@@ -108,12 +132,27 @@ C              WHOSE ENDS ARE ONE POINT IS TRIED IN BOTH ROLES)
                IF ((IEND .EQ. 1) .NEQV. LEXIT) IREV = 1
                IF (IC .GE. I - 1 .AND. IC .LE. J2) GOTO 28
 C              IQ IS ONE OF THE TWO ENDS S GOES BETWEEN
+C              (CMEND'S LOOK-UP WRITTEN OUT: THE INNERMOST LOOP)
                IF (LEXIT) THEN
                   IXC = KQX(IQ)
                   IYC = KQY(IQ)
-                  CALL CMEND(IC + 1, 2, IXD, IYD)
+                  IF (IC .LT. NITM) THEN
+                     IE4 = 2 * ITOUR(IC + 1) - 1 + IORI(ITOUR(IC + 1))
+                     IXD = KQX(IE4)
+                     IYD = KQY(IE4)
+                  ELSE
+                     IXD = KDTX
+                     IYD = KDTY
+                  END IF
                ELSE
-                  CALL CMEND(IC, 1, IXC, IYC)
+                  IF (IC .GE. 1) THEN
+                     IE4 = 2 * ITOUR(IC) - IORI(ITOUR(IC))
+                     IXC = KQX(IE4)
+                     IYC = KQY(IE4)
+                  ELSE
+                     IXC = KDSX
+                     IYC = KDSY
+                  END IF
                   IXD = KQX(IQ)
                   IYD = KQY(IQ)
                END IF

@@ -45,24 +45,31 @@ C     THE LENGTH THE MOVES SINCE THE KICK HAVE TAKEN OFF THE TOUR ------
       COMMON /CMTWJ/ DGAIN, NJRN, LJRN, KJRN
       SAVE /CMTWJ/
 C     ---- LOCAL -------------------------------------------------------
-      INTEGER I, J, M
+      INTEGER I, J, M, N
 C
+C     ONE PASS FROM BOTH ENDS: EACH PAIR IS SWAPPED, AND THE TWO ITEMS
+C     LEARN THEIR NEW PLACES AND ARE TURNED; THE MIDDLE ITEM OF AN ODD
+C     NUMBER STAYS WHERE IT IS AND IS ONLY TURNED
       I = I1
       J = I2
    10 CONTINUE
       IF (I .LT. J) THEN
          M = ITOUR(I)
-         ITOUR(I) = ITOUR(J)
+         N = ITOUR(J)
+         ITOUR(I) = N
          ITOUR(J) = M
+         IPOS(N) = I
+         IPOS(M) = J
+         IORI(N) = 1 - IORI(N)
+         IORI(M) = 1 - IORI(M)
          I = I + 1
          J = J - 1
          GOTO 10
       END IF
-      DO 20 I = I1, I2
+      IF (I .EQ. J) THEN
          M = ITOUR(I)
-         IPOS(M) = I
          IORI(M) = 1 - IORI(M)
-   20 CONTINUE
+      END IF
       KWORK = KWORK + MAX(0, I2 - I1 + 1)
       IF (LJRN .EQ. 1 .AND. I1 .LE. I2) THEN
          IF (NJRN .LT. MXJRN) THEN
