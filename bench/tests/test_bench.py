@@ -140,3 +140,25 @@ def test_verify_is_timed_only_on_the_boards_chosen(quick_run, tenzor_exe, tmp_pa
     assert 0 < float(row["verify_cpu_s"]) and 0 < float(row["verify_s"])
     assert 10 < float(row["verify_rss_mb"]) < 2048
     assert "verify s" in (tmp_path / "bench.txt").read_text(encoding="ascii")
+
+
+#: The tool-raised travel of the demo deck's three tapes, mm, as the harness's
+#: simulator reads it (commit a2ee905; the same since 31e3310).
+DEMO_TRAVEL_MM = {"small": 1118.923, "large": 486.931, "cond": 334.354}
+
+
+def test_demo_tour_is_the_recorded_one(run_tenzor):
+    """The tour's search is deterministic (a fixed seed; bounds that are counts,
+    not seconds), so the demo deck's travel is one number per tape on every
+    machine and with every compiler. Its conductors have two distinct ends,
+    which TSPLIB's pads (bench/tests/test_tsplib.py) do not: taking the wrong
+    end of the item beside a 2-opt candidate left every TSPLIB tour as it was
+    and made this conductor tape 17 % longer (392.6 mm); before this test only
+    the docs' excerpts of the demo's tapes and listings noticed, as text that
+    no longer matched. A change to the search made on purpose changes these
+    figures, and they are then recorded again."""
+    proc, out = run_tenzor(ROOT / "examples" / "demo.crd")
+    assert proc.returncode == 0, proc.stderr
+    stats = measure.read_tapes(out, "LOGIC-CARD-A")
+    got = {k: round(v.travel_mm, 3) for k, v in stats.items()}
+    assert got == DEMO_TRAVEL_MM
