@@ -21,9 +21,10 @@ C                               (CMKICK); 2 = AS 1, AND EACH ITEM FROM
 C                               THE QUEUE ADDS 50 TO THE WORK KWORK
 C     THE LENGTH THE MOVES TAKE OFF THE TOUR IS ADDED TO DGAIN.
 C     THE END BESIDE A PLACE IS LOOKED UP HERE (AND IN CMOROP) AS
-C     CMEND DOES IT, WRITTEN OUT: END 2M-1+IORI(M) IS THE ONE ITEM M IS
-C     ENTERED BY, 2M-IORI(M) THE ONE IT IS LEFT BY. A CALL OF CMEND
-C     PER LOOK-UP TOOK A SEVENTH OF A 1173-ITEM TAPE'S INSTRUCTIONS.
+C     CMEND DOES IT, WRITTEN OUT: KIN(M) = 2M-1+IORI(M) IS THE END ITEM
+C     M IS ENTERED BY, KOUT(M) = 2M-IORI(M) THE ONE IT IS LEFT BY; PLACE
+C     0 IS THE TOOL'S START, NITM+1 THE START POINT. A CALL OF CMEND PER
+C     LOOK-UP TOOK A SEVENTH OF A 1173-ITEM TAPE'S INSTRUCTIONS.
 C     CHANGES: SEE THE HISTORY OF THE REPOSITORY (GIT LOG)
 C=======================================================================
       SUBROUTINE CMOPT2(IMODE)
@@ -67,9 +68,14 @@ C     ---- LOCAL -------------------------------------------------------
      1        NMOVE, IX2, IY2, IX4, IY4, IE4
       DOUBLE PRECISION D1, DQ, GAIN, DIST
       INTEGER JX1, JY1, JX2, JY2
+      INTEGER KIN, KOUT, MM
 C     THE DISTANCE OF TWO POINTS: A STATEMENT FUNCTION, NO CALL
       DIST(JX1, JY1, JX2, JY2) = SQRT((DBLE(JX1) - JX2)**2 +
      1   (DBLE(JY1) - JY2)**2)
+C     THE END ITEM MM IS ENTERED BY, AND THE END IT IS LEFT BY, AS IT
+C     IS DRAWN NOW (CMEND'S RULE)
+      KIN(MM) = 2 * MM - 1 + IORI(MM)
+      KOUT(MM) = 2 * MM - IORI(MM)
 C
       NROUND = 0
       IF (IMODE .GE. 1) THEN
@@ -109,9 +115,9 @@ C     AT MOST THREE REVERSALS), SO THAT CMKICK CAN ALWAYS UNDO IT
          IP = IPOS(M)
          IF (ISIDE .EQ. 1) THEN
 C           THE MOVE LEAVING M: EXIT(IP) TO ENTRY(IP+1)
-            IE = 2 * M - IORI(M)
+            IE = KOUT(M)
             IF (IP .LT. NITM) THEN
-               IE4 = 2 * ITOUR(IP + 1) - 1 + IORI(ITOUR(IP + 1))
+               IE4 = KIN(ITOUR(IP + 1))
                IX2 = KQX(IE4)
                IY2 = KQY(IE4)
             ELSE
@@ -120,9 +126,9 @@ C           THE MOVE LEAVING M: EXIT(IP) TO ENTRY(IP+1)
             END IF
          ELSE
 C           THE MOVE INTO M: EXIT(IP-1) TO ENTRY(IP)
-            IE = 2 * M - 1 + IORI(M)
+            IE = KIN(M)
             IF (IP .GT. 1) THEN
-               IE4 = 2 * ITOUR(IP - 1) - IORI(ITOUR(IP - 1))
+               IE4 = KOUT(ITOUR(IP - 1))
                IX2 = KQX(IE4)
                IY2 = KQY(IE4)
             ELSE
@@ -141,8 +147,8 @@ C           IQ MUST BE THE SAME KIND OF END OF ITS ITEM AS IE IS OF M
 C           (AN ITEM WHOSE ENDS ARE ONE POINT HAS BOTH KINDS THERE)
             IF (KQX(2*M2) .NE. KQX(2*M2-1) .OR.
      1          KQY(2*M2) .NE. KQY(2*M2-1)) THEN
-               IF (ISIDE .EQ. 1 .AND. IQ .NE. 2 * M2 - IORI(M2)) GOTO 50
-               IF (ISIDE .EQ. 2 .AND. IQ .NE. 2 * M2 - 1 + IORI(M2))
+               IF (ISIDE .EQ. 1 .AND. IQ .NE. KOUT(M2)) GOTO 50
+               IF (ISIDE .EQ. 2 .AND. IQ .NE. KIN(M2))
      1            GOTO 50
             END IF
             J = IPOS(M2)
@@ -157,7 +163,7 @@ C           OUT: THE MOVES IE-(IX2,IY2) AND IQ-(IX4,IY4), THE END
 C           BESIDE IQ; IN: THE MOVES IE-IQ AND (IX2,IY2)-(IX4,IY4)
             IF (ISIDE .EQ. 1) THEN
                IF (J .LT. NITM) THEN
-                  IE4 = 2 * ITOUR(J + 1) - 1 + IORI(ITOUR(J + 1))
+                  IE4 = KIN(ITOUR(J + 1))
                   IX4 = KQX(IE4)
                   IY4 = KQY(IE4)
                ELSE
@@ -166,7 +172,7 @@ C           BESIDE IQ; IN: THE MOVES IE-IQ AND (IX2,IY2)-(IX4,IY4)
                END IF
             ELSE
                IF (J .GT. 1) THEN
-                  IE4 = 2 * ITOUR(J - 1) - IORI(ITOUR(J - 1))
+                  IE4 = KOUT(ITOUR(J - 1))
                   IX4 = KQX(IE4)
                   IY4 = KQY(IE4)
                ELSE

@@ -56,20 +56,25 @@ C     ---- LOCAL -------------------------------------------------------
       INTEGER IROLE
       DOUBLE PRECISION REM, ADD, GAIN, BEST, DIST, DPS
       INTEGER JX1, JY1, JX2, JY2
+      INTEGER KIN, KOUT, MM
 C     THE DISTANCE OF TWO POINTS: A STATEMENT FUNCTION, NO CALL
       DIST(JX1, JY1, JX2, JY2) = SQRT((DBLE(JX1) - JX2)**2 +
      1   (DBLE(JY1) - JY2)**2)
+C     THE END ITEM MM IS ENTERED BY, AND THE END IT IS LEFT BY, AS IT
+C     IS DRAWN NOW (CMEND'S RULE)
+      KIN(MM) = 2 * MM - 1 + IORI(MM)
+      KOUT(MM) = 2 * MM - IORI(MM)
 C
       LIMP = 0
       I = IPOS(M)
 C     THE START OF S, AND THE MOVE INTO IT
 C     (CMEND'S LOOK-UPS ARE WRITTEN OUT HERE: CMOROP IS CALLED FOR
 C     EVERY ITEM THE REPAIRS LOOK AT)
-      IE4 = 2 * M - 1 + IORI(M)
+      IE4 = KIN(M)
       IXS = KQX(IE4)
       IYS = KQY(IE4)
       IF (I .GT. 1) THEN
-         IE4 = 2 * ITOUR(I - 1) - IORI(ITOUR(I - 1))
+         IE4 = KOUT(ITOUR(I - 1))
          IXP = KQX(IE4)
          IYP = KQY(IE4)
       ELSE
@@ -81,11 +86,11 @@ C     EVERY ITEM THE REPAIRS LOOK AT)
          J2 = I + K - 1
          IF (J2 .GT. NITM) RETURN
 C        THE END OF S, AND THE MOVE OUT OF IT
-         IE4 = 2 * ITOUR(J2) - IORI(ITOUR(J2))
+         IE4 = KOUT(ITOUR(J2))
          IXE = KQX(IE4)
          IYE = KQY(IE4)
          IF (J2 .LT. NITM) THEN
-            IE4 = 2 * ITOUR(J2 + 1) - 1 + IORI(ITOUR(J2 + 1))
+            IE4 = KIN(ITOUR(J2 + 1))
             IXN = KQX(IE4)
             IYN = KQY(IE4)
          ELSE
@@ -101,9 +106,9 @@ C        THE END OF S, AND THE MOVE OUT OF IT
 C        ---- CANDIDATES FROM THE NEAREST ENDS OF BOTH ENDS OF S -------
          DO 40 IEND = 1, 2
             IF (IEND .EQ. 1) THEN
-               ID = 2 * ITOUR(I) - 1 + IORI(ITOUR(I))
+               ID = KIN(ITOUR(I))
             ELSE
-               ID = 2 * ITOUR(J2) - IORI(ITOUR(J2))
+               ID = KOUT(ITOUR(J2))
             END IF
             DO 30 NB = 1, MXNB
                IQ = KNB(NB, ID)
@@ -115,7 +120,7 @@ C              TAKING S OUT SAVES; THE NEIGHBOURS ARE NEAREST FIRST
                M2 = (IQ + 1) / 2
                J = IPOS(M2)
                IF (J .GE. I .AND. J .LE. J2) GOTO 30
-               LEXIT = IQ .EQ. 2 * M2 - IORI(M2)
+               LEXIT = IQ .EQ. KOUT(M2)
                LONE = KQX(2*M2) .EQ. KQX(2*M2-1) .AND.
      1                KQY(2*M2) .EQ. KQY(2*M2-1)
                IROLE = 0
@@ -137,7 +142,7 @@ C              (CMEND'S LOOK-UP WRITTEN OUT: THE INNERMOST LOOP)
                   IXC = KQX(IQ)
                   IYC = KQY(IQ)
                   IF (IC .LT. NITM) THEN
-                     IE4 = 2 * ITOUR(IC + 1) - 1 + IORI(ITOUR(IC + 1))
+                     IE4 = KIN(ITOUR(IC + 1))
                      IXD = KQX(IE4)
                      IYD = KQY(IE4)
                   ELSE
@@ -146,7 +151,7 @@ C              (CMEND'S LOOK-UP WRITTEN OUT: THE INNERMOST LOOP)
                   END IF
                ELSE
                   IF (IC .GE. 1) THEN
-                     IE4 = 2 * ITOUR(IC) - IORI(ITOUR(IC))
+                     IE4 = KOUT(ITOUR(IC))
                      IXC = KQX(IE4)
                      IYC = KQY(IE4)
                   ELSE
