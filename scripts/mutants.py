@@ -105,6 +105,26 @@ MUTANTS = [
            "            if (deck(last:last) == achar(13)) last = last - 1",
            "            if (deck(last:last) == achar(10)) last = last - 1",
            "card reader keeps the CR of a CRLF deck"),
+    # the tour: faults that leave every tape valid and only the order worse or
+    # different, which the recorded tours (d198, pcb442, the demo deck) catch
+    Mutant("legacy/cmkick.f", "      LMAX = MIN(50, NITM / 3)", "      LMAX = MIN(40, NITM / 3)",
+           "kicks swap runs of up to 40 items, not 50"),
+    Mutant("legacy/cmkick.f", "IF (MODE .EQ. 2 .AND. MOD(KK, 10) .EQ. 0)",
+           "IF (MODE .EQ. 2 .AND. MOD(KK, 9) .EQ. 0)", "every ninth kick long, not every tenth"),
+    Mutant("legacy/cmkick.f", "IF (LJRN .EQ. 1 .AND. DGAIN .LE. 1.0D-6) THEN",
+           "IF (LJRN .EQ. 1 .AND. DGAIN .LT. -1.0D-6) THEN",
+           "a kick that leaves the tour no shorter is kept"),
+    Mutant("legacy/cmkick.f", "      NSTAG = 10 * NITM", "      NSTAG = 5 * NITM",
+           "the kicks give up after 5 failures an item in a row"),
+    Mutant("legacy/cmorop.f", "      DO 50 K = 1, 3", "      DO 50 K = 1, 2",
+           "Or-opt moves runs of one or two items only"),
+    Mutant("legacy/cmknn.f", "PARAMETER (MXQ = 2, MXRING = 30, MXQEN = 4000)",
+           "PARAMETER (MXQ = 1, MXRING = 30, MXQEN = 4000)",
+           "one near end per quadrant, not two"),
+    Mutant("legacy/cmopt2.f", "IE4 = KOUT(ITOUR(J - 1))", "IE4 = KIN(ITOUR(J - 1))",
+           "2-opt looks at the wrong end of the item before a candidate"),
+    Mutant("legacy/cmtrev.f", "      IF (I .EQ. J) THEN", "      IF (I .EQ. -J) THEN",
+           "the middle item of an odd reversal keeps its direction"),
 ]
 
 TESTS = ["python", "-m", "pytest", "-q", "-x", "--tb=no", "-rf", "-p", "no:cacheprovider", "-m",
