@@ -111,8 +111,8 @@ MUTANTS = [
            "kicks swap runs of up to 40 items, not 50"),
     Mutant("legacy/cmkick.f", "IF (MODE .EQ. 2 .AND. MOD(KK, 10) .EQ. 0)",
            "IF (MODE .EQ. 2 .AND. MOD(KK, 9) .EQ. 0)", "every ninth kick long, not every tenth"),
-    Mutant("legacy/cmkick.f", "IF (LJRN .EQ. 1 .AND. DGAIN .LE. 1.0D-6) THEN",
-           "IF (LJRN .EQ. 1 .AND. DGAIN .LT. -1.0D-6) THEN",
+    Mutant("legacy/cmkick.f", "         IF (DGAIN .LE. 1.0D-6) THEN",
+           "         IF (DGAIN .LT. -1.0D-6) THEN",
            "a kick that leaves the tour no shorter is kept"),
     Mutant("legacy/cmkick.f", "      NSTAG = 10 * NITM", "      NSTAG = 5 * NITM",
            "the kicks give up after 5 failures an item in a row"),
@@ -125,6 +125,10 @@ MUTANTS = [
            "2-opt looks at the wrong end of the item before a candidate"),
     Mutant("legacy/cmtrev.f", "      IF (I .EQ. J) THEN", "      IF (I .EQ. -J) THEN",
            "the middle item of an odd reversal keeps its direction"),
+    Mutant("legacy/cmtrev.f", "            DO 4 IP = KJHI + 1, I2", "            DO 4 IP = KJHI + 2, I2",
+           "a kick's first place past the saved run is not saved"),
+    Mutant("legacy/cmkick.f", "            KWORK = KWORK + KJWK", "            KWORK = KWORK + 0",
+           "an undone kick's reversals not counted in the work bound"),
 ]
 
 TESTS = ["python", "-m", "pytest", "-q", "-x", "--tb=no", "-rf", "-p", "no:cacheprovider", "-m",
