@@ -74,11 +74,15 @@ contains
         end do
     end function sha256_hex
 
-    !> One 64-byte block into the state h.
+    !> One 64-byte block into the state h. A 32-bit rotation is a shift of
+    !> the word written twice side by side (`dbl`), so the three rotations
+    !> of a round's sigma cost one shift each; the sums need masking only
+    !> where they become a word of the state (no sum of a round reaches
+    !> 2**36, far inside 64 bits).
     subroutine compress(h, block)
         integer(int64), intent(inout) :: h(8)
         character(len=64), intent(in) :: block
-        integer(int64) :: w(0:63), a, b, c, d, e, f, g, hh, t1, t2, s0, s1
+        integer(int64) :: w(0:63), a, b, c, d, e, f, g, hh, t1, t2, s0, s1, x, xx
         integer :: t
         do t = 0, 15
             w(t) = ior(ior(shiftl(int(iachar(block(4*t+1:4*t+1)), int64), 24), &
@@ -87,17 +91,24 @@ contains
                            int(iachar(block(4*t+4:4*t+4)), int64)))
         end do
         do t = 16, 63
-            s0 = ieor(ieor(rotr(w(t-15), 7), rotr(w(t-15), 18)), shiftr(w(t-15), 3))
-            s1 = ieor(ieor(rotr(w(t-2), 17), rotr(w(t-2), 19)), shiftr(w(t-2), 10))
+            x = w(t-15)
+            xx = dbl(x)
+            s0 = ieor(iand(ieor(shiftr(xx, 7), shiftr(xx, 18)), m32), shiftr(x, 3))
+            x = w(t-2)
+            xx = dbl(x)
+            s1 = ieor(iand(ieor(shiftr(xx, 17), shiftr(xx, 19)), m32), shiftr(x, 10))
             w(t) = iand(w(t-16) + s0 + w(t-7) + s1, m32)
         end do
         a = h(1); b = h(2); c = h(3); d = h(4)
         e = h(5); f = h(6); g = h(7); hh = h(8)
         do t = 0, 63
-            s1 = ieor(ieor(rotr(e, 6), rotr(e, 11)), rotr(e, 25))
-            t1 = iand(hh + s1 + ieor(iand(e, f), iand(ieor(e, m32), g)) + k(t + 1) + w(t), m32)
-            s0 = ieor(ieor(rotr(a, 2), rotr(a, 13)), rotr(a, 22))
-            t2 = iand(s0 + ieor(ieor(iand(a, b), iand(a, c)), iand(b, c)), m32)
+            ! t1: h + Sigma1(e) + Ch(e, f, g) + k + w; t2: Sigma0(a) + Maj(a, b, c)
+            xx = dbl(e)
+            t1 = hh + iand(ieor(ieor(shiftr(xx, 6), shiftr(xx, 11)), shiftr(xx, 25)), m32) &
+                 + ieor(g, iand(e, ieor(f, g))) + k(t + 1) + w(t)
+            xx = dbl(a)
+            t2 = iand(ieor(ieor(shiftr(xx, 2), shiftr(xx, 13)), shiftr(xx, 22)), m32) &
+                 + ior(iand(a, b), iand(c, ior(a, b)))
             hh = g
             g = f
             f = e
@@ -117,11 +128,11 @@ contains
         h(8) = iand(h(8) + hh, m32)
     end subroutine compress
 
-    !> A 32-bit word rotated right by n.
-    pure integer(int64) function rotr(x, n)
+    !> A 32-bit word written twice, in bits 0-31 and 32-63: shifted right by
+    !> n (0 < n < 32), its low 32 bits are the word rotated right by n.
+    pure elemental integer(int64) function dbl(x)
         integer(int64), intent(in) :: x
-        integer, intent(in) :: n
-        rotr = ior(shiftr(x, n), iand(shiftl(x, 32 - n), m32))
-    end function rotr
+        dbl = ior(x, shiftl(x, 32))
+    end function dbl
 
 end module base_sha256
