@@ -99,15 +99,7 @@ C                    AND AN ITEM WHOSE ENDS ARE ONE POINT ONLY ONCE
                         IF (KQX(IQ) .EQ. KQX(IQ-1) .AND.
      1                      KQY(IQ) .EQ. KQY(IQ-1)) GOTO 10
                      END IF
-C                    (CMKINS'S OWN TEST OF A FULL LIST, MADE HERE FIRST:
-C                    MOST ENDS LOOKED AT ENTER NEITHER LIST, AND A CALL
-C                    FOR EACH TOOK A TENTH OF A 100 000-PAD BOARD'S RUN)
-                     IF (N .LT. MXNB) THEN
-                        CALL CMKINS(NBI, NBD, N, MXNB, IQ, D)
-                     ELSE IF (D .LT. NBD(N) .OR. (D .EQ. NBD(N) .AND.
-     1                        IQ .LE. NBI(N))) THEN
-                        CALL CMKINS(NBI, NBD, N, MXNB, IQ, D)
-                     END IF
+                     CALL CMKINS(NBI, NBD, N, MXNB, IQ, D)
 C                    ITS QUADRANT: 1 RIGHT AND UP, 2 LEFT AND UP, 3 LEFT
 C                    AND DOWN, 4 RIGHT AND DOWN (AN END AT THE SAME
 C                    POINT IS IN NONE)
@@ -124,15 +116,8 @@ C                    POINT IS IN NONE)
                      ELSE
                         GOTO 10
                      END IF
-                     IF (NQ(IQD) .LT. MXQ) THEN
-                        CALL CMKINS(KQB(1, IQD), QBD(1, IQD), NQ(IQD),
-     1                              MXQ, IQ, D)
-                     ELSE IF (D .LT. QBD(MXQ, IQD) .OR.
-     1                        (D .EQ. QBD(MXQ, IQD) .AND.
-     2                         IQ .LE. KQB(MXQ, IQD))) THEN
-                        CALL CMKINS(KQB(1, IQD), QBD(1, IQD), NQ(IQD),
-     1                              MXQ, IQ, D)
-                     END IF
+                     CALL CMKINS(KQB(1, IQD), QBD(1, IQD), NQ(IQD), MXQ,
+     1                           IQ, D)
    10             CONTINUE
    20          CONTINUE
    30       CONTINUE
