@@ -106,7 +106,7 @@ MUTANTS = [
            "            if (deck(last:last) == achar(10)) last = last - 1",
            "card reader keeps the CR of a CRLF deck"),
     # the tour: faults that leave every tape valid and only the order worse or
-    # different, which the recorded tours (d198, pcb442, u574, the demo deck) catch
+    # different, which the recorded tours (d198, pcb442, u574, pcb3038, the demo deck) catch
     Mutant("legacy/cmkick.f", "      LMAX = MIN(50, NITM / 3)", "      LMAX = MIN(40, NITM / 3)",
            "kicks swap runs of up to 40 items, not 50"),
     Mutant("legacy/cmkick.f", "IF (MODE .EQ. 2 .AND. MOD(KK, 10) .EQ. 0)",
