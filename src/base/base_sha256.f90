@@ -130,7 +130,7 @@ contains
 
     !> A 32-bit word written twice, in bits 0-31 and 32-63: shifted right by
     !> n (0 < n < 32), its low 32 bits are the word rotated right by n.
-    pure elemental integer(int64) function dbl(x)
+    elemental integer(int64) function dbl(x)
         integer(int64), intent(in) :: x
         dbl = ior(x, shiftl(x, 32))
     end function dbl
