@@ -105,5 +105,6 @@ flang: setup
 	@bash scripts/judges.sh flang
 
 # bench builds the release profile of TENZOR itself (fpm build --profile release).
-bench: setup
+bench:
+	@WITH_BENCH=1 bash scripts/setup.sh
 	python -m bench $(BENCH_ARGS)

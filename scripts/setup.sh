@@ -8,6 +8,8 @@
 #     `em703 html` headless in its tests, driven by selenium (requirements.txt);
 #   - with WITH_FLANG=1 (`make flang`, CI), flang-16 (Debian, about 800 MB)
 #     builds TENZOR a third way;
+#   - with WITH_BENCH=1 (`make bench`), the packages of requirements-bench.txt
+#     (OR-Tools for the TSPLIB table, exact pins) go into .venv as well;
 #   - .venv/ holds fpm and the Python packages of requirements.txt (exact pins),
 #     and the project of pyproject.toml installed editable: `python -m harness`,
 #     `python -m seeds`, `python -m bench` and `dxf2deck` then work anywhere.
@@ -51,6 +53,18 @@ if [ ! -x .venv/bin/python ] || [ "$(cat "$stamp" 2>/dev/null)" != "$want" ]; th
     .venv/bin/python -m pip install --quiet --disable-pip-version-check \
         --no-deps --no-build-isolation --editable .
     echo "$want" > "$stamp"
+fi
+
+# The benchmarks' own packages, on request (make bench), with a stamp of their own.
+if [ "${WITH_BENCH:-0}" = 1 ]; then
+    want_bench=$(cat requirements-bench.txt | sha256sum | cut -d' ' -f1)
+    stamp_bench=.venv/.requirements-bench.sha256
+    if [ "$(cat "$stamp_bench" 2>/dev/null)" != "$want_bench" ]; then
+        echo "setup: installing the benchmarks' Python packages into .venv"
+        .venv/bin/python -m pip install --quiet --disable-pip-version-check \
+            -r requirements-bench.txt
+        echo "$want_bench" > "$stamp_bench"
+    fi
 fi
 
 # fpm adds each object to its static library and never takes one out: after a

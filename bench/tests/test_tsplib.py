@@ -4,10 +4,13 @@ TENZOR's figure on them belongs in the benchmark's output and in
 docs/PERFORMANCE.md; here only that the instances read back whole, that the
 decks fit the field, that TENZOR's tape of d198 visits every node once
 with a tour no shorter than the proven optimum, and that the tours of the
-recorded TSPLIB run are this tree's, to the unit.
+recorded TSPLIB run are this tree's, to the unit; and that the OR-Tools
+column's adapter tours a ring (when OR-Tools is installed) or is empty.
 """
 from __future__ import annotations
 
+import math
+import sys
 from pathlib import Path
 
 import pytest
@@ -73,3 +76,27 @@ def test_tenzor_tour_is_the_recorded_one(name, tenzor_exe, tmp_path):
     row = tsplib.run_instance(name, tenzor_exe, tmp_path, 1, 0.0, refs=False)
     assert row["tenzor_len"] == int(recorded["tenzor_len"]), (name, row["tenzor_len"])
     assert row["tenzor_pct"] <= 1.0
+
+
+def _ring(n: int, r: float = 1000.0) -> tsplib.Instance:
+    """n nodes on a circle, listed out of order: the optimum is the ring."""
+    nodes = tuple((round(r * math.cos(2 * math.pi * k / n), 1),
+                   round(r * math.sin(2 * math.pi * k / n), 1))
+                  for k in [(7 * j) % n for j in range(n)])
+    inst = tsplib.Instance("ring", "EUC_2D", 0, nodes)
+    ring = sorted(range(n), key=lambda i: math.atan2(nodes[i][1], nodes[i][0]))
+    return tsplib.Instance("ring", "EUC_2D", inst.tour_length(ring), nodes)
+
+
+def test_ortools_column_is_empty_without_ortools(monkeypatch):
+    """A missing OR-Tools leaves its columns empty; it is not an error."""
+    monkeypatch.setitem(sys.modules, "ortools", None)
+    assert tsplib.ortools(_ring(12), 1) is None
+
+
+def test_ortools_tours_a_ring():
+    """With OR-Tools installed (make bench installs it, the tests do not), its
+    tour visits every node once: on a ring of 12 nodes it is the ring."""
+    pytest.importorskip("ortools.constraint_solver.pywrapcp")
+    inst = _ring(12)
+    assert tsplib.ortools(inst, 1) == inst.optimum
