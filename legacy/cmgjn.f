@@ -1,0 +1,120 @@
+C=======================================================================
+C     CMGJN  - JOIN ENDS GREEDILY, THE SHORTEST MOVE FIRST      (SHARED)
+C     SOURCE:  RECONSTRUCTED (SEE CMGRDY). UNIT U HAS THE ENDS 2U-1
+C              AND 2U AT KQX, KQY, AND THEIR NEAR ENDS IN KNB AND DNB
+C              (CMKNN). A UNIT WHOSE TWO ENDS ARE ONE POINT (A PAD) IS
+C              JOINED TWICE THERE, BY END 2U-1, WHICH IS THE ONE CMKNN
+C              LISTS; ANY OTHER END ONCE. OF ALL THE MOVES FROM AN END
+C              TO ONE OF ITS NEAR ENDS THE SHORTEST ARE TAKEN FIRST,
+C              EACH WHEN BOTH ENDS ARE STILL FREE AND ITS TWO UNITS ARE
+C              NOT YET IN ONE CHAIN (SO NO CHAIN CLOSES INTO A LOOP).
+C              THE ENDS WAIT IN A HEAP BY THE LENGTH OF THE NEXT MOVE ON
+C              THEIR LIST (TIES: THE SMALLER END FIRST), SO EACH LIST IS
+C              READ ONCE, IN ORDER: ABOUT 2*NU*KMAX STEPS OF LOG(NU).
+C     NU      (INPUT)  INTEGER  NUMBER OF UNITS
+C     KMAX    (INPUT)  INTEGER  HOW MANY OF EACH END'S NEAR ENDS ARE
+C                               TRIED (THE FIRST KMAX OF ITS LIST)
+C     KFLK    (IN/OUT) /CMTWG/  KFLK(S): THE END JOINED TO END S, 0 =
+C                               FREE; A PAD'S TWO JOINS ARE KFLK(2U-1)
+C                               AND KFLK(2U). ALL 0 ON ENTRY.
+C     KUF     (IN/OUT) /CMTWG/  THE CHAINS (UNION-FIND: A UNIT'S
+C                               PARENT); KUF(U) = U ON ENTRY.
+C     WORK: KPTR(E), THE PLACE OF E'S NEXT MOVE IN ITS LIST; KHP, THE
+C     HEAP OF ENDS.
+C     CHANGES: SEE THE HISTORY OF THE REPOSITORY (GIT LOG)
+C=======================================================================
+      SUBROUTINE CMGJN(NU, KMAX)
+      IMPLICIT NONE
+      INTEGER NU, KMAX
+C     ---- /CMITM/ THE ITEMS OF A TAPE AND THE TOUR THROUGH THEM -------
+      INTEGER MXITM
+      PARAMETER (MXITM = 300000)
+      INTEGER NITM, IKND(MXITM), IREF(MXITM), IEX(MXITM), IEY(MXITM),
+     1        IXX(MXITM), IXY(MXITM), ITOUR(MXITM), IPOS(MXITM),
+     2        IORI(MXITM)
+      COMMON /CMITM/ NITM, IKND, IREF, IEX, IEY, IXX, IXY, ITOUR, IPOS,
+     1               IORI
+      SAVE /CMITM/
+C     ---- /CMTWK/ WORK SPACE OF THE TOUR: GRID, NEIGHBOURS, QUEUE -----
+      INTEGER MXPT, MXCEL, MXNB
+      PARAMETER (MXPT = 2 * MXITM, MXCEL = 2 * MXITM, MXNB = 16)
+      INTEGER NGX, NGY, KGX0, KGY0, KGCS, KDSX, KDSY, KDTX, KDTY,
+     1        KQHD, KQN, KWORK, KWMAX,
+     2        KQX(MXPT), KQY(MXPT), KCST(MXCEL + 1), KCCN(MXCEL),
+     3        KCEL(MXPT), KSLT(MXPT), KNB(MXNB, MXPT), KQUE(MXITM),
+     4        LQUE(MXITM)
+      COMMON /CMTWK/ NGX, NGY, KGX0, KGY0, KGCS, KDSX, KDSY, KDTX, KDTY,
+     1               KQHD, KQN, KWORK, KWMAX, KQX, KQY, KCST, KCCN,
+     2               KCEL, KSLT, KNB, KQUE, LQUE
+      SAVE /CMTWK/
+C     ---- /CMTWD/ THE LENGTH FROM EACH END TO EACH OF ITS NEAR ENDS --
+      DOUBLE PRECISION DNB(MXNB, MXPT)
+      COMMON /CMTWD/ DNB
+      SAVE /CMTWD/
+C     ---- /CMTWG/ THE GREEDY TOUR: WHICH END IS JOINED TO WHICH -------
+      INTEGER KLNK(MXPT), KFLK(MXPT), KPTR(MXPT), KHP(MXPT),
+     1        KUF(MXITM), KFSA(MXITM), KFSB(MXITM)
+      COMMON /CMTWG/ KLNK, KFLK, KPTR, KHP, KUF, KFSA, KFSB
+      SAVE /CMTWG/
+C     ---- LOCAL -------------------------------------------------------
+      INTEGER NH, IE, IQ, IU, IV, IRU, IRV, ISE, ISQ, I
+C
+C     ---- THE HEAP: EVERY END THAT CAN BE JOINED AND HAS A NEAR END ---
+      NH = 0
+      DO 10 IE = 1, 2 * NU
+         IU = (IE + 1) / 2
+         IF (MOD(IE, 2) .EQ. 0 .AND. KQX(IE) .EQ. KQX(IE - 1) .AND.
+     1       KQY(IE) .EQ. KQY(IE - 1)) GOTO 10
+         IF (KNB(1, IE) .EQ. 0) GOTO 10
+         KPTR(IE) = 1
+         NH = NH + 1
+         KHP(NH) = IE
+   10 CONTINUE
+      DO 20 I = NH / 2, 1, -1
+         CALL CMGSFT(NH, I)
+   20 CONTINUE
+C     ---- THE SHORTEST WAITING MOVE: TAKE IT IF IT MAY BE TAKEN -------
+   30 CONTINUE
+      IF (NH .EQ. 0) RETURN
+      IE = KHP(1)
+      CALL CMGFRE(IE, ISE)
+      IF (ISE .EQ. 0) GOTO 60
+      IQ = KNB(KPTR(IE), IE)
+      CALL CMGFRE(IQ, ISQ)
+      IF (ISQ .EQ. 0) GOTO 50
+      IU = (IE + 1) / 2
+      IV = (IQ + 1) / 2
+C     THE CHAINS OF IU AND IV (THE PARENTS HALVE THE WAY AS THEY GO)
+      IRU = IU
+   40 IF (KUF(IRU) .NE. IRU) THEN
+         KUF(IRU) = KUF(KUF(IRU))
+         IRU = KUF(IRU)
+         GOTO 40
+      END IF
+      IRV = IV
+   45 IF (KUF(IRV) .NE. IRV) THEN
+         KUF(IRV) = KUF(KUF(IRV))
+         IRV = KUF(IRV)
+         GOTO 45
+      END IF
+      IF (IRU .EQ. IRV) GOTO 50
+      KFLK(ISE) = ISQ
+      KFLK(ISQ) = ISE
+      KUF(MAX(IRU, IRV)) = MIN(IRU, IRV)
+C     A PAD JOINED ONCE MAY BE JOINED AGAIN
+      CALL CMGFRE(IE, ISE)
+      IF (ISE .EQ. 0) GOTO 60
+C     ---- THE END'S NEXT MOVE, OR OFF THE HEAP WHEN IT HAS NO MORE ----
+   50 CONTINUE
+      KPTR(IE) = KPTR(IE) + 1
+      IF (KPTR(IE) .GT. KMAX) GOTO 60
+      IF (KNB(KPTR(IE), IE) .EQ. 0) GOTO 60
+      CALL CMGSFT(NH, 1)
+      GOTO 30
+   60 CONTINUE
+      KHP(1) = KHP(NH)
+      NH = NH - 1
+      IF (NH .GT. 0) CALL CMGSFT(NH, 1)
+      GOTO 30
+C     END OF CMGJN
+      END
