@@ -62,8 +62,10 @@ C        K IS ALWAYS PUNCHED, ALWAYS TWO DIGITS
          CALL DVPNCH(IU, ICDIG(MOD(JFK(J), 10), ICOD))
          CALL DVPNCH(IU, ICKK)
          NROW = NROW + 4
-         LINE(LL+1:LL+6) = 'K' // CHAR(ICHAR('0') + JFK(J) / 10) //
-     1      CHAR(ICHAR('0') + MOD(JFK(J), 10)) // ' KK'
+         LINE(LL+1:LL+1) = 'K'
+         LINE(LL+2:LL+2) = CHAR(ICHAR('0') + JFK(J) / 10)
+         LINE(LL+3:LL+3) = CHAR(ICHAR('0') + MOD(JFK(J), 10))
+         LINE(LL+4:LL+6) = ' KK'
          CALL DVTEXT(IU, LINE(1:LL+6))
    20 CONTINUE
       CALL DVPNCH(IU, ICGM)
