@@ -69,6 +69,19 @@ C     THE BOX OF THE ENDS: NO END LIES IN A QUADRANT BEYOND IT
          IBY2 = MAX(IBY2, KQY(IP))
     2 CONTINUE
       DO 60 IP = 1, NP
+C        THE EXIT OF AN ITEM WHOSE ENDS ARE ONE POINT (A PAD) HAS THE
+C        LIST OF ITS ENTRY, FOUND JUST BEFORE: THE SAME POINT, THE SAME
+C        ITEM LEFT OUT, THE SAME ENDS LOOKED AT IN THE SAME ORDER
+         IF (MOD(IP, 2) .EQ. 0) THEN
+            IF (KQX(IP) .EQ. KQX(IP - 1) .AND.
+     1          KQY(IP) .EQ. KQY(IP - 1)) THEN
+               DO 3 J = 1, MXNB
+                  KNB(J, IP) = KNB(J, IP - 1)
+                  DNB(J, IP) = DNB(J, IP - 1)
+    3          CONTINUE
+               GOTO 60
+            END IF
+         END IF
          N = 0
          NEX = 0
          NEX16 = -1
