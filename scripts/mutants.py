@@ -129,6 +129,11 @@ MUTANTS = [
            "a kick's first place past the saved run is not saved"),
     Mutant("legacy/cmkick.f", "            KWORK = KWORK + KJWK", "            KWORK = KWORK + 0",
            "an undone kick's reversals not counted in the work bound"),
+    Mutant("legacy/cmknn.f", "            IF (KQX(IP) .EQ. KQX(IP - 1) .AND.",
+           "            IF (KQX(IP) .EQ. KQX(IP - 1) .OR.",
+           "an exit takes its entry's near ends when the two share only x"),
+    Mutant("legacy/cmecho.f", "         LINE(9-LS:8) = S(1:LS)", "         LINE(10-LS:9) = S(1:LS)",
+           "the card number echoed one column to the right"),
 ]
 
 TESTS = ["python", "-m", "pytest", "-q", "-x", "--tb=no", "-rf", "-p", "no:cacheprovider", "-m",
