@@ -9,7 +9,8 @@ C              NEAREST OTHERS TO FILL THE LIST. ON A BOARD OF CLUSTERS
 C              THE NEAREST ENDS ALL LIE IN AN END'S OWN CLUSTER, AND
 C              NO MOVE COULD THEN JOIN TWO CLUSTERS BETTER; THE
 C              QUADRANTS GIVE EACH END NEIGHBOURS ON EVERY SIDE. THE
-C              GRID HOLDS ALL ENDS.
+C              GRID HOLDS ALL ENDS BUT THE EXIT OF AN ITEM WHOSE ENDS
+C              ARE ONE POINT (CMTOUR), WHICH THE ENTRY STANDS FOR.
 C     NP      (INPUT)  INTEGER  NUMBER OF ENDS
 C     CHANGES: SEE THE HISTORY OF THE REPOSITORY (GIT LOG)
 C=======================================================================
@@ -41,20 +42,20 @@ C     ---- /CMTWD/ THE LENGTH FROM EACH END TO EACH OF ITS NEAR ENDS --
       DOUBLE PRECISION DNB(MXNB, MXPT)
       COMMON /CMTWD/ DNB
       SAVE /CMTWD/
+C     ---- /CMTWG/ THE GRID OF THE NEAR ENDS, CELL BY CELL (CMKNN) ----
+      INTEGER KCX(MXPT), KCY(MXPT), KCNA(MXCEL)
+      COMMON /CMTWG/ KCX, KCY, KCNA
+      SAVE /CMTWG/
 C     ---- LOCAL -------------------------------------------------------
       INTEGER MXQ, MXRING, MXQEN
       PARAMETER (MXQ = 2, MXRING = 30, MXQEN = 4000)
       INTEGER IP, IC, ICX, ICY, K, IGX, IGY, IS, IQ, ISTEP, KMAX, N, J,
      1        NBI(MXNB), NQ(4), KQB(MXQ, 4), IQD, IDX, IDY, NF,
-     2        L, NBF(MXNB), NEX, NEX16, IBX1, IBX2, IBY1, IBY2
+     2        L, NBF(MXNB), NEX, NEX16, IBX1, IBX2, IBY1, IBY2, MATE,
+     3        IPX, IPY
       DOUBLE PRECISION D, RK, NBD(MXNB), QBD(MXQ, 4), DF(MXNB), CMRBND
       LOGICAL LDONE, LOUT(4)
       EXTERNAL CMRBND
-      DOUBLE PRECISION DIST
-      INTEGER JX1, JY1, JX2, JY2
-C     THE DISTANCE OF TWO POINTS AS CMOPT2 AND CMOROP RECKON IT
-      DIST(JX1, JY1, JX2, JY2) = SQRT((DBLE(JX1) - JX2)**2 +
-     1   (DBLE(JY1) - JY2)**2)
 C
       KMAX = MAX(NGX, NGY)
 C     THE BOX OF THE ENDS: NO END LIES IN A QUADRANT BEYOND IT
@@ -68,6 +69,22 @@ C     THE BOX OF THE ENDS: NO END LIES IN A QUADRANT BEYOND IT
          IBY1 = MIN(IBY1, KQY(IP))
          IBY2 = MAX(IBY2, KQY(IP))
     2 CONTINUE
+C     EACH SLOT OF THE GRID GETS ITS END'S POINT (KCX, KCY), SO THAT A
+C     CELL IS READ FROM ONE STRETCH OF STORE RATHER THAN FROM ENDS ALL
+C     OVER THE TABLES, AND EACH CELL THE NUMBER OF ENDS IT STANDS FOR
+C     (KCNA): ITS OWN, AND THE EXIT OF EACH PAD WHOSE ENTRY IT HOLDS
+      DO 8 IC = 1, NGX * NGY
+         KCNA(IC) = KCCN(IC)
+         DO 6 IS = KCST(IC), KCST(IC) + KCCN(IC) - 1
+            IQ = KCEL(IS)
+            KCX(IS) = KQX(IQ)
+            KCY(IS) = KQY(IQ)
+            IF (MOD(IQ, 2) .EQ. 1) THEN
+               IF (KQX(IQ + 1) .EQ. KQX(IQ) .AND.
+     1             KQY(IQ + 1) .EQ. KQY(IQ)) KCNA(IC) = KCNA(IC) + 1
+            END IF
+    6    CONTINUE
+    8 CONTINUE
       DO 60 IP = 1, NP
 C        THE EXIT OF AN ITEM WHOSE ENDS ARE ONE POINT (A PAD) HAS THE
 C        LIST OF ITS ENTRY, FOUND JUST BEFORE: THE SAME POINT, THE SAME
@@ -82,6 +99,10 @@ C        ITEM LEFT OUT, THE SAME ENDS LOOKED AT IN THE SAME ORDER
                GOTO 60
             END IF
          END IF
+         IPX = KQX(IP)
+         IPY = KQY(IP)
+         MATE = IP + 1
+         IF (MOD(IP, 2) .EQ. 0) MATE = IP - 1
          N = 0
          NEX = 0
          NEX16 = -1
@@ -100,24 +121,24 @@ C        ITEM LEFT OUT, THE SAME ENDS LOOKED AT IN THE SAME ORDER
                DO 20 IGX = ICX - K, ICX + K, ISTEP
                   IF (IGX .LT. 0 .OR. IGX .GE. NGX) GOTO 20
                   IC = IGX + IGY * NGX + 1
+                  NEX = NEX + KCNA(IC)
                   DO 10 IS = KCST(IC), KCST(IC) + KCCN(IC) - 1
                      IQ = KCEL(IS)
-                     NEX = NEX + 1
-                     D = (DBLE(KQX(IQ)) - KQX(IP))**2 +
-     1                   (DBLE(KQY(IQ)) - KQY(IP))**2
-C                    NOT ITSELF, NOT THE OTHER END OF ITS OWN ITEM,
-C                    AND AN ITEM WHOSE ENDS ARE ONE POINT ONLY ONCE
-                     IF ((IQ + 1) / 2 .EQ. (IP + 1) / 2) GOTO 10
-                     IF (MOD(IQ, 2) .EQ. 0) THEN
-                        IF (KQX(IQ) .EQ. KQX(IQ-1) .AND.
-     1                      KQY(IQ) .EQ. KQY(IQ-1)) GOTO 10
+C                    NOT ITSELF, NOT THE OTHER END OF ITS OWN ITEM
+                     IF (IQ .EQ. IP .OR. IQ .EQ. MATE) GOTO 10
+                     IDX = KCX(IS) - IPX
+                     IDY = KCY(IS) - IPY
+                     D = DBLE(IDX)**2 + DBLE(IDY)**2
+C                    ONLY AN END THAT CAN ENTER THE LIST IS OFFERED TO
+C                    IT (CMKINS BREAKS A TIE OF LENGTHS)
+                     IF (N .LT. MXNB) THEN
+                        CALL CMKINS(NBI, NBD, N, MXNB, IQ, D)
+                     ELSE IF (D .LE. NBD(MXNB)) THEN
+                        CALL CMKINS(NBI, NBD, N, MXNB, IQ, D)
                      END IF
-                     CALL CMKINS(NBI, NBD, N, MXNB, IQ, D)
 C                    ITS QUADRANT: 1 RIGHT AND UP, 2 LEFT AND UP, 3 LEFT
 C                    AND DOWN, 4 RIGHT AND DOWN (AN END AT THE SAME
 C                    POINT IS IN NONE)
-                     IDX = KQX(IQ) - KQX(IP)
-                     IDY = KQY(IQ) - KQY(IP)
                      IF (IDX .GT. 0 .AND. IDY .GE. 0) THEN
                         IQD = 1
                      ELSE IF (IDX .LE. 0 .AND. IDY .GT. 0) THEN
@@ -129,8 +150,13 @@ C                    POINT IS IN NONE)
                      ELSE
                         GOTO 10
                      END IF
-                     CALL CMKINS(KQB(1, IQD), QBD(1, IQD), NQ(IQD), MXQ,
-     1                           IQ, D)
+                     IF (NQ(IQD) .LT. MXQ) THEN
+                        CALL CMKINS(KQB(1, IQD), QBD(1, IQD), NQ(IQD),
+     1                              MXQ, IQ, D)
+                     ELSE IF (D .LE. QBD(MXQ, IQD)) THEN
+                        CALL CMKINS(KQB(1, IQD), QBD(1, IQD), NQ(IQD),
+     1                              MXQ, IQ, D)
+                     END IF
    10             CONTINUE
    20          CONTINUE
    30       CONTINUE
@@ -192,8 +218,11 @@ C        ---- THE LIST: THE QUADRANTS' ENDS, THEN THE NEAREST OTHERS ---
             DNB(J, IP) = 0.0D0
             IF (J .LE. NF) THEN
                KNB(J, IP) = NBF(J)
-               DNB(J, IP) = DIST(KQX(IP), KQY(IP), KQX(NBF(J)),
-     1                            KQY(NBF(J)))
+C              THE ROOT OF THE SUM OF SQUARES FOUND ABOVE: THE SAME
+C              DIFFERENCES (EXACT), THE SAME SQUARES, ADDED IN THE SAME
+C              ORDER AS IN THE DIST OF CMOPT2 AND CMOROP, SO THE SAME
+C              LENGTH TO THE LAST BIT
+               DNB(J, IP) = SQRT(DF(J))
             END IF
    50    CONTINUE
    60 CONTINUE
