@@ -29,14 +29,17 @@ C     ---- /CMITM/ THE ITEMS OF A TAPE AND THE TOUR THROUGH THEM -------
       PARAMETER (MXITM = 300000)
       INTEGER NITM, IKND(MXITM), IREF(MXITM), IEX(MXITM), IEY(MXITM),
      1        IXX(MXITM), IXY(MXITM), ITOUR(MXITM), IPOS(MXITM),
-     2        IORI(MXITM)
+     2        IORI(MXITM), NJOB
       COMMON /CMITM/ NITM, IKND, IREF, IEX, IEY, IXX, IXY, ITOUR, IPOS,
-     1               IORI
+     1               IORI, NJOB
       SAVE /CMITM/
 C     ---- LOCAL -------------------------------------------------------
       EXTERNAL MLITEM
       INTEGER I
 C
+C     THE ITEMS OF ALL THE PACKAGE'S TAPES: ON A BIG BOARD EVEN A SMALL
+C     TAPE GETS FEWER KICKS (CMTOUR)
+      NJOB = NPAD + NCON + NARC
       NITM = 0
       DO 10 I = 1, NCON
          NITM = NITM + 1

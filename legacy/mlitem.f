@@ -36,9 +36,9 @@ C     ---- /CMITM/ THE ITEMS OF A TAPE AND THE TOUR THROUGH THEM -------
       PARAMETER (MXITM = 300000)
       INTEGER NITM, IKND(MXITM), IREF(MXITM), IEX(MXITM), IEY(MXITM),
      1        IXX(MXITM), IXY(MXITM), ITOUR(MXITM), IPOS(MXITM),
-     2        IORI(MXITM)
+     2        IORI(MXITM), NJOB
       COMMON /CMITM/ NITM, IKND, IREF, IEX, IEY, IXX, IXY, ITOUR, IPOS,
-     1               IORI
+     1               IORI, NJOB
       SAVE /CMITM/
 C     ---- LOCAL -------------------------------------------------------
       INTEGER J
