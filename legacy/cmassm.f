@@ -51,11 +51,20 @@ C     ---- /CMITM/ THE ITEMS OF A TAPE AND THE TOUR THROUGH THEM -------
       COMMON /CMITM/ NITM, IKND, IREF, IEX, IEY, IXX, IXY, ITOUR, IPOS,
      1               IORI, NJOB
       SAVE /CMITM/
+C     ---- /CMTRS/ HOW THE TOUR OF THE LAST TAPE WAS MADE (LISTING) ---
+      DOUBLE PRECISION TRLNN, TRLOPT, TRLKCK
+      INTEGER KTSTOP, NKMADE, NKMAX, NKKEPT, KWUSE, KWBND
+      COMMON /CMTRS/ TRLNN, TRLOPT, TRLKCK, KTSTOP, NKMADE, NKMAX,
+     1               NKKEPT, KWUSE, KWBND
+      SAVE /CMTRS/
 C     ---- LOCAL -------------------------------------------------------
       INTEGER NM, I, IP, IEX1, IEY1, IXE, IYE, ICX, ICY, I1, ICRD,
      1        ICOL, IDUM1, IDUM2, NE0
       DOUBLE PRECISION DX, DY
 C
+C     NO TOUR YET: THE LISTING SAYS NOTHING OF ONE FOR A TAPE WITHOUT
+C     ITEMS, AND THAT THE ORDER IS THE DECK'S WHERE THE P CARD SAYS SO
+      KTSTOP = -1
       NM = NFR
       CALL CMDISP(1, NM, DX, DY)
       ICX = NINT(MAX(MIN(DX, 1.0D9), -1.0D9))
@@ -81,6 +90,7 @@ C        SEES MAY NOT BE DEFINED THERE (X3.9-1978 15.9.3.6)
       IF (NPERR .GT. NE0) RETURN
 C     ---- THE ORDER ---------------------------------------------------
       IF (IORD .EQ. 2) THEN
+         KTSTOP = 0
          DO 20 I = 1, NITM
             ITOUR(I) = I
             IPOS(I) = I

@@ -25,11 +25,17 @@ C                               OR 10 KICKS AN ITEM FAIL IN A ROW
 C     MODE    (INPUT)  INTEGER  THE MODE OF CMOPT2'S REPAIRS: 1 = THE
 C                               WORK COUNTS ITEMS MOVED, 2 = ALSO THE
 C                               ITEMS LOOKED AT
+C     NDONE   (OUTPUT) INTEGER  THE KICKS MADE
+C     NKEPT   (OUTPUT) INTEGER  THE KICKS WHOSE CHANGE WAS KEPT
+C     KWHY    (OUTPUT) INTEGER  WHY THEY STOPPED: 1 TOO FEW ITEMS (UNDER
+C                               8: NONE MADE), 2 ALL NKICK MADE, 3 10
+C                               KICKS AN ITEM FAILED IN A ROW, 4 THE
+C                               WORK BOUND
 C     CHANGES: SEE THE HISTORY OF THE REPOSITORY (GIT LOG)
 C=======================================================================
-      SUBROUTINE CMKICK(NKICK, MODE)
+      SUBROUTINE CMKICK(NKICK, MODE, NDONE, NKEPT, KWHY)
       IMPLICIT NONE
-      INTEGER NKICK, MODE
+      INTEGER NKICK, MODE, NDONE, NKEPT, KWHY
 C     ---- /CMITM/ THE ITEMS OF A TAPE AND THE TOUR THROUGH THEM -------
       INTEGER MXITM
       PARAMETER (MXITM = 300000)
@@ -70,15 +76,26 @@ C     THE DISTANCE OF TWO POINTS: A STATEMENT FUNCTION, NO CALL
       DIST(JX1, JY1, JX2, JY2) = SQRT((DBLE(JX1) - JX2)**2 +
      1   (DBLE(JY1) - JY2)**2)
 C
+      NDONE = 0
+      NKEPT = 0
+      KWHY = 1
       IF (NITM .LT. 8) RETURN
+      KWHY = 2
       ISEED = 1977
       LMAX = MIN(50, NITM / 3)
 C     KLAST: THE LAST KICK WHOSE CHANGE WAS KEPT
       KLAST = 0
       NSTAG = 10 * NITM
       DO 50 KK = 1, NKICK
-         IF (KWORK .GT. KWMAX) GOTO 60
-         IF (KK - KLAST .GT. NSTAG) GOTO 60
+         IF (KWORK .GT. KWMAX) THEN
+            KWHY = 4
+            GOTO 60
+         END IF
+         IF (KK - KLAST .GT. NSTAG) THEN
+            KWHY = 3
+            GOTO 60
+         END IF
+         NDONE = KK
 C        ---- EMPTY A QUEUE THE WORK BOUND LEFT ------------------------
    20    CONTINUE
          IF (KQN .GT. 0) THEN
@@ -145,6 +162,7 @@ C        SAME)
    30       CONTINUE
          ELSE
             KLAST = KK
+            NKEPT = NKEPT + 1
          END IF
          LJRN = 0
    50 CONTINUE

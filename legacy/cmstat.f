@@ -3,7 +3,10 @@ C     CMSTAT - PRINT THE STATISTICS OF A PUNCHED TAPE          (SHARED)
 C     SOURCE:  RECONSTRUCTED, DOCS/RECONSTRUCTION.MD: FRAMES, ROWS, TAPE
 C              LENGTH (2.54 MM A ROW), DRAWN AND TRAVEL LENGTH,
 C              ESTIMATED RUN TIME AT THE SPEEDS OF THE REPORT (5.5 M/MIN
-C              LINES AND TRAVEL, 1.5 M/MIN ARCS).
+C              LINES AND TRAVEL, 1.5 M/MIN ARCS); THEN HOW THE ORDER OF
+C              THE ITEMS WAS FOUND (CMTOUR): THE LENGTH OF THE MOVES
+C              BETWEEN ITEMS AFTER EACH STEP, THE KICKS MADE AND KEPT,
+C              THEIR WORK AGAINST ITS BOUND AND WHY THEY STOPPED.
 C     IU      (INPUT)  INTEGER  THE TAPE: 1 SMALL, 2 LARGE, 3 COND
 C     CHANGES: SEE THE HISTORY OF THE REPOSITORY (GIT LOG)
 C=======================================================================
@@ -30,6 +33,12 @@ C     ---- /CMSTA/ WHAT THE SIMULATED MACHINE DID WITH EACH TAPE -------
       COMMON /CMSTA/ DRAWN, TRAVL, RTIME, BBOX, PWIN, NFRT, NROWT,
      1               IENDX, IENDY, IENDT
       SAVE /CMSTA/
+C     ---- /CMTRS/ HOW THE TOUR OF THE LAST TAPE WAS MADE (LISTING) ---
+      DOUBLE PRECISION TRLNN, TRLOPT, TRLKCK
+      INTEGER KTSTOP, NKMADE, NKMAX, NKKEPT, KWUSE, KWBND
+      COMMON /CMTRS/ TRLNN, TRLOPT, TRLKCK, KTSTOP, NKMADE, NKMAX,
+     1               NKKEPT, KWUSE, KWBND
+      SAVE /CMTRS/
 C     ---- LOCAL -------------------------------------------------------
       CHARACTER*128 LINE
       CHARACTER*12 WHAT(3), SUF(3)
@@ -37,7 +46,10 @@ C     ---- LOCAL -------------------------------------------------------
       CHARACTER*14 F1, F2, F3
       INTEGER L, L1, LS
       CHARACTER*1 TNAME(3)
+      CHARACTER*28 WHY(4)
       DATA TNAME / 'S', 'B', 'L' /
+      DATA WHY / 'FEWER THAN 8 ITEMS', 'ALL MADE',
+     1           'NO GAIN IN 10 KICKS AN ITEM', 'THE WORK BOUND' /
       DATA WHAT / 'SMALL PADS', 'LARGE PADS', 'CONDUCTORS' /
       DATA SUF / '-small.ptp', '-large.ptp', '-cond.ptp' /
 C
@@ -58,10 +70,31 @@ C     THE LISTING IS THEN THE SAME ON EVERY PROCESSOR
       CALL CMFDP(RTIME(IU), F3(1:10))
       WRITE (LINE, 110) F1, F2, F3(1:10)
       CALL DVPRNT(LINE)
+C     ---- THE ORDER ---------------------------------------------------
+      IF (KTSTOP .EQ. 0) THEN
+         CALL DVPRNT('        ORDER  AS IN THE DECK')
+      ELSE IF (KTSTOP .GT. 0) THEN
+         CALL CMFDP(TRLNN / 100.0D0, F1)
+         CALL CMFDP(TRLOPT / 100.0D0, F2)
+         CALL CMFDP(TRLKCK / 100.0D0, F3)
+         WRITE (LINE, 120) F1, F2, F3
+         CALL DVPRNT(LINE)
+         CALL CMTRIM(WHY(KTSTOP), L)
+         IF (KTSTOP .EQ. 1) THEN
+            CALL DVPRNT('        KICKS  NONE: ' // WHY(KTSTOP)(1:L))
+         ELSE
+            WRITE (LINE, 130) NKMADE, NKMAX, NKKEPT, KWUSE, KWBND
+            CALL DVPRNT(LINE(1:90) // WHY(KTSTOP)(1:L))
+         END IF
+      END IF
       RETURN
   100 FORMAT (8X, 'FRAMES', I9, '   ROWS', I10, '   TAPE LENGTH',
      1        A11, ' M')
   110 FORMAT (8X, 'DRAWN', A14, ' MM   TRAVEL', A14,
      1        ' MM   RUN TIME', A10, ' MIN')
+  120 FORMAT (8X, 'ORDER  NEAREST NEIGHBOUR', A14,
+     1        ' MM   2-OPT, OR-OPT', A14, ' MM   KICKS', A14, ' MM')
+  130 FORMAT (8X, 'KICKS', I8, ' OF', I8, ',', I8, ' KEPT   WORK', I11,
+     1        ' OF', I11, '   STOPPED: ')
 C     END OF CMSTAT
       END
