@@ -134,6 +134,12 @@ MUTANTS = [
            "an exit takes its entry's near ends when the two share only x"),
     Mutant("legacy/cmecho.f", "         LINE(9-LS:8) = S(1:LS)", "         LINE(10-LS:9) = S(1:LS)",
            "the card number echoed one column to the right"),
+    Mutant("legacy/cmknn.f", "                  NEX = NEX + KCNA(IC)",
+           "                  NEX = NEX + KCCN(IC)",
+           "the ends a quadrant's search looks at counted without the pads' exits"),
+    Mutant("legacy/cmtour.f", "         NJ = MIN(MAX(NITM, NJOB), 20000)",
+           "         NJ = MIN(NITM, 20000)",
+           "the kicks' bound of a tape counts its own items, not its package's"),
 ]
 
 TESTS = ["python", "-m", "pytest", "-q", "-x", "--tb=no", "-rf", "-p", "no:cacheprovider", "-m",
