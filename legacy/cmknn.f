@@ -10,7 +10,8 @@ C              THE NEAREST ENDS ALL LIE IN AN END'S OWN CLUSTER, AND
 C              NO MOVE COULD THEN JOIN TWO CLUSTERS BETTER; THE
 C              QUADRANTS GIVE EACH END NEIGHBOURS ON EVERY SIDE. THE
 C              GRID HOLDS ALL ENDS BUT THE EXIT OF AN ITEM WHOSE ENDS
-C              ARE ONE POINT (CMTOUR), WHICH THE ENTRY STANDS FOR.
+C              ARE ONE POINT (CMTOUR): SUCH AN EXIT TAKES THE LIST OF
+C              ITS ENTRY.
 C     NP      (INPUT)  INTEGER  NUMBER OF ENDS
 C     CHANGES: SEE THE HISTORY OF THE REPOSITORY (GIT LOG)
 C=======================================================================
@@ -43,8 +44,8 @@ C     ---- /CMTWD/ THE LENGTH FROM EACH END TO EACH OF ITS NEAR ENDS --
       COMMON /CMTWD/ DNB
       SAVE /CMTWD/
 C     ---- /CMTWG/ THE GRID OF THE NEAR ENDS, CELL BY CELL (CMKNN) ----
-      INTEGER KCX(MXPT), KCY(MXPT), KCNA(MXCEL)
-      COMMON /CMTWG/ KCX, KCY, KCNA
+      INTEGER KCX(MXPT), KCY(MXPT)
+      COMMON /CMTWG/ KCX, KCY
       SAVE /CMTWG/
 C     ---- LOCAL -------------------------------------------------------
       INTEGER MXQ, MXRING, MXQEN
@@ -71,19 +72,10 @@ C     THE BOX OF THE ENDS: NO END LIES IN A QUADRANT BEYOND IT
     2 CONTINUE
 C     EACH SLOT OF THE GRID GETS ITS END'S POINT (KCX, KCY), SO THAT A
 C     CELL IS READ FROM ONE STRETCH OF STORE RATHER THAN FROM ENDS ALL
-C     OVER THE TABLES, AND EACH CELL THE NUMBER OF ENDS IT STANDS FOR
-C     (KCNA): ITS OWN, AND THE EXIT OF EACH PAD WHOSE ENTRY IT HOLDS
-      DO 8 IC = 1, NGX * NGY
-         KCNA(IC) = KCCN(IC)
-         DO 6 IS = KCST(IC), KCST(IC) + KCCN(IC) - 1
-            IQ = KCEL(IS)
-            KCX(IS) = KQX(IQ)
-            KCY(IS) = KQY(IQ)
-            IF (MOD(IQ, 2) .EQ. 1) THEN
-               IF (KQX(IQ + 1) .EQ. KQX(IQ) .AND.
-     1             KQY(IQ + 1) .EQ. KQY(IQ)) KCNA(IC) = KCNA(IC) + 1
-            END IF
-    6    CONTINUE
+C     OVER THE TABLES
+      DO 8 IS = 1, KCST(NGX * NGY + 1) - 1
+         KCX(IS) = KQX(KCEL(IS))
+         KCY(IS) = KQY(KCEL(IS))
     8 CONTINUE
       DO 60 IP = 1, NP
 C        THE EXIT OF AN ITEM WHOSE ENDS ARE ONE POINT (A PAD) HAS THE
@@ -121,7 +113,7 @@ C        ITEM LEFT OUT, THE SAME ENDS LOOKED AT IN THE SAME ORDER
                DO 20 IGX = ICX - K, ICX + K, ISTEP
                   IF (IGX .LT. 0 .OR. IGX .GE. NGX) GOTO 20
                   IC = IGX + IGY * NGX + 1
-                  NEX = NEX + KCNA(IC)
+                  NEX = NEX + KCCN(IC)
                   DO 10 IS = KCST(IC), KCST(IC) + KCCN(IC) - 1
                      IQ = KCEL(IS)
 C                    NOT ITSELF, NOT THE OTHER END OF ITS OWN ITEM
