@@ -147,11 +147,13 @@ class CardError(ValueError):
 
 _REAL = re.compile(r"^ *([+-]?)(\d*)(\.?)(\d*) *$")
 _INT = re.compile(r"^ *([+-]?\d+)$")
+#: A character that is not printable ASCII (space to tilde).
+_NOT_PRINTABLE = re.compile(r"[^ -~]")
 
 
 def _cols(card: str, a: int, b: int) -> str:
     """Columns a..b (1-based, inclusive) of a card padded to 80."""
-    return card.ljust(80)[a - 1:b]
+    return card[a - 1:b].ljust(b - a + 1)
 
 
 def real(card: str, a: int, b: int, no: int, default: int | None = 0) -> int | None:
@@ -279,9 +281,9 @@ def _cards(text: str) -> Iterator[tuple[int, str]]:
         line = raw[:-1] if raw.endswith("\r") else raw
         if len(line) > 80:
             raise CardError(no, f"longer than 80 columns ({len(line)})")
-        bad = [c for c in line if not " " <= c <= "~"]
+        bad = _NOT_PRINTABLE.search(line)
         if bad:
-            raise CardError(no, f"column {line.index(bad[0]) + 1}: byte {bad[0]!r}")
+            raise CardError(no, f"column {bad.start() + 1}: byte {bad.group()!r}")
         card = line[:72].rstrip()
         if not card:
             continue
