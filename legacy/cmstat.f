@@ -83,6 +83,8 @@ C     ---- THE ORDER ---------------------------------------------------
          IF (KTSTOP .EQ. 1) THEN
             CALL DVPRNT('        KICKS  NONE: ' // WHY(KTSTOP)(1:L))
          ELSE
+C           FORMAT 130 FILLS COLUMNS 1-90, UP TO THE BLANK AFTER
+C           'STOPPED:'; THE REASON FOLLOWS IT
             WRITE (LINE, 130) NKMADE, NKMAX, NKKEPT, KWUSE, KWBND
             CALL DVPRNT(LINE(1:90) // WHY(KTSTOP)(1:L))
          END IF
