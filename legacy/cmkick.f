@@ -9,8 +9,8 @@ C              A B C D BECOMES A C B D (A "DOUBLE BRIDGE", WHICH NO
 C              2-OPT MOVE CAN MAKE). THE ITEMS AROUND THE CUTS ARE
 C              QUEUED AND CMOPT2 REPAIRS THE TOUR AROUND THEM. IF THE
 C              TOUR IS THEN SHORTER THE CHANGE IS KEPT, ELSE THE RUN OF
-C              PLACES ITS REVERSALS CHANGED IS PUT BACK AS CMTREV SAVED
-C              IT BEFORE THEIR FIRST CHANGE.
+C              PLACES THE SWAP AND THE REPAIR'S REVERSALS CHANGED IS PUT
+C              BACK AS IT WAS SAVED BEFORE THEIR FIRST CHANGE.
 C              THE PLACES ARE DRAWN BY THE MINIMAL STANDARD GENERATOR
 C              OF LEWIS, GOODMAN AND MILLER (1969), IN SCHRAGE'S FORM
 C              FOR 32-BIT INTEGERS, FROM A FIXED SEED: THE SAME DECK
@@ -130,15 +130,33 @@ C        ---- WHAT THE KICK ADDS TO THE TOUR (A NEGATIVE GAIN) ---------
          DGAIN = DIST(IX1, IY1, IX2, IY2) + DIST(IX3, IY3, IX4, IY4)
      1         + DIST(IX5, IY5, IX6, IY6) - DIST(IX1, IY1, IX4, IY4)
      2         - DIST(IX5, IY5, IX2, IY2) - DIST(IX3, IY3, IX6, IY6)
-C        ---- A B C D TO A C B D BY THREE REVERSALS, SAVED -------------
-         NJRN = 0
-         KJWK = 0
-         KJLO = 1
-         KJHI = 0
+C        ---- A B C D TO A C B D, SAVED --------------------------------
+C        THE RUN B C IS SAVED AS CMTREV SAVES A KICK'S PLACES, AND C B
+C        IS WRITTEN BACK FROM THE SAVED COPY, EACH ITEM DRAWN AS BEFORE.
+C        IT IS COUNTED AS THE THREE REVERSALS THAT MAKE THE SAME SWAP
+C        (B C, THEN EACH RUN AGAIN): THE WORK BOUND AND MXJRN THEN STOP
+C        THE KICKS AND THEIR REPAIRS WHERE THOSE REVERSALS DID, AND THE
+C        TAPES ARE THE SAME, WITH HALF THE ITEMS MOVED AND NONE TURNED.
+         NJRN = 3
+         KJWK = 2 * (L1 + L2)
+         KWORK = KWORK + KJWK
+         KJLO = IP + 1
+         KJHI = IR
          LJRN = 1
-         CALL CMTREV(IP + 1, IR)
-         CALL CMTREV(IP + 1, IP + L2)
-         CALL CMTREV(IP + L2 + 1, IR)
+         DO 12 J = IP + 1, IR
+            KJIT(J) = ITOUR(J)
+            KJOR(J) = IORI(ITOUR(J))
+   12    CONTINUE
+         DO 14 J = 1, L2
+            M = KJIT(IQ + J)
+            ITOUR(IP + J) = M
+            IPOS(M) = IP + J
+   14    CONTINUE
+         DO 16 J = 1, L1
+            M = KJIT(IP + J)
+            ITOUR(IP + L2 + J) = M
+            IPOS(M) = IP + L2 + J
+   16    CONTINUE
 C        ---- REPAIR AROUND THE THREE NEW MOVES ------------------------
          DO 10 IK = IP, IP + 1
             IF (IK .GE. 1) CALL CMQPSH(ITOUR(IK))
