@@ -1,0 +1,326 @@
+"""The kicks' traces: how soon TENZOR's tour comes within 1 % of the optimum.
+
+``python -m bench.kicks`` measures the search the way docs/PERFORMANCE.md's
+trials of the kicks are measured ("Five more trials", "At 9982ddf"). It
+builds a *traced* copy of a tree's TENZOR in a temporary directory (the tree
+itself is not touched), whose ``CMKICK`` also
+
+* takes its seed from the environment variable ``TZSEED`` (default 1977,
+  TENZOR's own) and its window, the failed kicks an item after which the
+  kicks stop, from ``TZWIN`` (default 10, TENZOR's own);
+* on a tape of more than 150 items (on a TSPLIB deck, the small-pad tape:
+  the others are empty) appends to the file ``TZTRACE`` names a line when
+  the kicks begin, one at each kick kept and one when they stop: the
+  kick's number (negated on the last line), the process's CPU seconds so
+  far and the tour's length in the tape's units.
+
+The instrumentation uses GNU Fortran's ``GETENV``: it is a tool for
+measuring, never part of TENZOR, whose legacy/ stays FORTRAN 77. It is put
+in by replacing lines of ``legacy/cmkick.f`` (:data:`PATCH`); if that file
+has changed so that a line is no longer there, the tool says which.
+
+Each instance of ``bench/tsplib/`` is run once with each seed under a long
+window (30 by default), so that every shorter window can be read off the
+same trace: a window of W stops the kicks after W * N kicks in a row that
+all failed, at a time found from the trace's own cost of a kick. The tour's
+per cent over the proven optimum is that of its TSPLIB length
+(:mod:`bench.tsplib`), each trace's lengths scaled by the ratio of the two
+at the trace's end. Printed, per instance: the kicks to come within 1 %
+with the first seed and with the others, the kicks a budget of a hundredth
+of LKH-3's time allows (LKH-3's seconds read from the recorded TSPLIB run,
+``--lkh``, as the hour of that run may not be this one's), the cost of a
+kick; then the mean per cent over the optimum after 25 to 400 ms of CPU;
+then, for windows of 1 to 10 kicks an item, the runs within 1 % and the
+first seed's CPU time to the end of the program and per cent.
+
+    python -m bench.kicks                                  # this tree, eleven instances, six seeds
+    python -m bench.kicks --tree ../trial --names d493,pcb1173 --seeds 1977,12345
+"""
+from __future__ import annotations
+
+import argparse
+import csv
+import os
+import shutil
+import statistics
+import subprocess
+import sys
+import tempfile
+from dataclasses import dataclass
+from pathlib import Path
+
+from . import measure, tsplib
+
+ROOT = Path(__file__).resolve().parents[1]
+
+#: The seeds of the trials in docs/PERFORMANCE.md; the first is TENZOR's.
+SEEDS: tuple[int, ...] = (1977, 12345, 777, 4242, 99, 31337)
+#: Times (ms of CPU) at which the mean per cent is read.
+AT_MS: tuple[int, ...] = (25, 50, 100, 200, 400)
+#: Windows (failed kicks an item) read off each trace.
+WINDOWS: tuple[int, ...] = (1, 2, 3, 5, 10)
+#: Tapes of at most this many items are not traced.
+TRACE_ABOVE = 150
+
+#: The instrumentation of legacy/cmkick.f: (a line block of the file, what
+#: replaces it). Each block must occur exactly once.
+PATCH: tuple[tuple[str, str], ...] = (
+    ("      DOUBLE PRECISION DIST\n",
+     "      DOUBLE PRECISION DIST, CMTLEN\n"
+     "      EXTERNAL CMTLEN\n"
+     "      CHARACTER*80 ENVV\n"
+     "      INTEGER ITRC, NWIN\n"
+     "      REAL TCPU\n"),
+    ("      ISEED = 1977\n",
+     "      ISEED = 1977\n"
+     "      CALL GETENV('TZSEED', ENVV)\n"
+     "      IF (ENVV .NE. ' ') READ (ENVV, *) ISEED\n"
+     "      NWIN = 10\n"
+     "      CALL GETENV('TZWIN', ENVV)\n"
+     "      IF (ENVV .NE. ' ') READ (ENVV, *) NWIN\n"
+     "      ITRC = 0\n"
+     "      CALL GETENV('TZTRACE', ENVV)\n"
+     f"      IF (ENVV .NE. ' ' .AND. NITM .GT. {TRACE_ABOVE}) THEN\n"
+     "         ITRC = 1\n"
+     "         OPEN (77, FILE=ENVV, STATUS='UNKNOWN', POSITION='APPEND')\n"
+     "         CALL CPU_TIME(TCPU)\n"
+     "         WRITE (77, *) 0, TCPU, CMTLEN()\n"
+     "      END IF\n"),
+    ("      NSTAG = 10 * NITM\n",
+     "      NSTAG = NWIN * NITM\n"),
+    ("            KLAST = KK\n",
+     "            KLAST = KK\n"
+     "            IF (ITRC .EQ. 1) THEN\n"
+     "               CALL CPU_TIME(TCPU)\n"
+     "               WRITE (77, *) KK, TCPU, CMTLEN()\n"
+     "            END IF\n"),
+    ("   60 CONTINUE\n      LJRN = 0\n",
+     "   60 CONTINUE\n"
+     "      IF (ITRC .EQ. 1) THEN\n"
+     "         CALL CPU_TIME(TCPU)\n"
+     "         WRITE (77, *) -NDONE, TCPU, CMTLEN()\n"
+     "         CLOSE (77)\n"
+     "      END IF\n"
+     "      LJRN = 0\n"),
+)
+
+
+class KicksError(Exception):
+    """The traced copy cannot be made or run."""
+
+
+def traced_source(text: str) -> str:
+    """legacy/cmkick.f with :data:`PATCH` put in; KicksError names the
+    first block that is not in ``text`` exactly once."""
+    for old, new in PATCH:
+        n = text.count(old)
+        if n != 1:
+            first = old.splitlines()[0].strip()
+            raise KicksError(f"legacy/cmkick.f holds {n} copies of the line {first!r}, not "
+                             "one: the trace cannot be put in; update bench/kicks.py's PATCH")
+        text = text.replace(old, new)
+    return text
+
+
+def build_traced(tree: Path, work: Path) -> Path:
+    """Copy the Fortran of ``tree`` into ``work``, put the trace in, build
+    it with ``fpm build --profile release``; the executable's path."""
+    fpm = shutil.which("fpm")
+    if fpm is None:
+        raise KicksError("fpm is not on PATH: put .venv/bin on PATH (make setup)")
+    for part in ("legacy", "src", "app", "test"):
+        if (tree / part).is_dir():
+            shutil.copytree(tree / part, work / part)
+    shutil.copy2(tree / "fpm.toml", work / "fpm.toml")
+    kick = work / "legacy" / "cmkick.f"
+    kick.write_text(traced_source(kick.read_text(encoding="ascii")), encoding="ascii")
+    proc = subprocess.run([fpm, "build", "--profile", "release"], cwd=work,
+                          capture_output=True, text=True)
+    if proc.returncode != 0:
+        raise KicksError(f"fpm build of the traced copy failed:\n{proc.stdout[-2000:]}"
+                         f"{proc.stderr[-2000:]}")
+    out = subprocess.run([fpm, "run", "--profile", "release", "--runner", "echo", "tenzor"],
+                         cwd=work, check=True, capture_output=True, text=True).stdout.split()
+    return work / out[-1]
+
+
+@dataclass
+class Trace:
+    """One traced run: ``points`` (kick, CPU s, per cent over the optimum),
+    the first when the kicks begin, the last when they stop (its kick
+    number the kicks made); ``cpu`` the whole process's CPU seconds."""
+    items: int
+    points: list[tuple[int, float, float]]
+    cpu: float
+
+    @property
+    def kicks(self) -> int:
+        return self.points[-1][0]
+
+    def per_kick(self) -> float:
+        """CPU seconds a kick, over the whole trace."""
+        return (self.points[-1][1] - self.points[0][1]) / max(1, self.kicks)
+
+    def after(self) -> float:
+        """CPU seconds of the program after the kicks."""
+        return max(0.0, self.cpu - self.points[-1][1])
+
+    def at(self, ms: float) -> float:
+        """Per cent over the optimum at ``ms`` of CPU (the first point's,
+        before the kicks begin)."""
+        pct = self.points[0][2]
+        for _, t, p in self.points:
+            if t * 1000 <= ms:
+                pct = p
+        return pct
+
+    def kicks_to(self, pct: float = 1.0) -> int | None:
+        """The kick after which the tour is first within ``pct`` per cent
+        (0: before any kick), or None."""
+        return next((k for k, _, p in self.points if p <= pct), None)
+
+    def window(self, w: int) -> tuple[float, float]:
+        """Stopped after ``w`` * items failed kicks in a row: (CPU seconds
+        of the whole program, per cent). The trace's own window must be at
+        least ``w``; past its end the run ends as it did."""
+        k0, t0, _ = self.points[0]
+        last = self.points[0]
+        for point in self.points[1:-1] + [(self.kicks + 10**9, 0.0, 0.0)]:
+            if point[0] - last[0] > w * self.items:
+                stop = min(last[0] + w * self.items, self.kicks)
+                return t0 + self.per_kick() * stop + self.after(), last[2]
+            last = point
+        return self.cpu, self.points[-1][2]
+
+
+def read_trace(path: Path, items: int, pct_end: float, cpu: float) -> Trace:
+    """A trace file, its lengths scaled so that the last is ``pct_end`` per
+    cent over the optimum."""
+    rows = [line.split() for line in path.read_text().splitlines() if line.strip()]
+    if len(rows) < 2:
+        raise KicksError(f"{path}: no trace (is the tape over {TRACE_ABOVE} items?)")
+    pts = [(abs(int(k)), float(t), float(x)) for k, t, x in rows]
+    scale = (1 + pct_end / 100) / pts[-1][2]
+    return Trace(items, [(k, t, 100 * (x * scale - 1)) for k, t, x in pts], cpu)
+
+
+def run_traced(exe: Path, name: str, seed: int, window: int, scratch: Path) -> Trace:
+    """One run of the traced TENZOR on a TSPLIB instance."""
+    inst = tsplib.load(name)
+    deck = scratch / f"{name}.crd"
+    if not deck.exists():
+        deck.write_text(inst.deck(), encoding="ascii")
+    trc = scratch / f"{name}.{seed}.trc"
+    trc.unlink(missing_ok=True)
+    out = scratch / name
+    out.mkdir(exist_ok=True)
+    env = dict(os.environ, TZTRACE=str(trc), TZSEED=str(seed), TZWIN=str(window))
+    proc = subprocess.Popen([str(exe), str(deck), "-o", str(out)], env=env,
+                            stdout=subprocess.DEVNULL, stderr=subprocess.PIPE)
+    _, status, usage = os.wait4(proc.pid, 0)
+    proc.returncode = os.waitstatus_to_exitcode(status)
+    if proc.returncode != 0:
+        raise KicksError(f"traced tenzor on {name} exited {proc.returncode}")
+    stats = measure.read_tapes(out, inst.name.upper()[:8])
+    length = inst.tour_length(tsplib.tenzor_cycle(inst, stats["small"].run))
+    return read_trace(trc, len(inst.nodes), 100 * (length / inst.optimum - 1),
+                      usage.ru_utime + usage.ru_stime)
+
+
+def lkh_seconds(path: Path) -> dict[str, float]:
+    """LKH-3's seconds per instance from a recorded tsplib.csv."""
+    try:
+        with path.open(newline="") as f:
+            return {r["instance"]: float(r["lkh_s"]) for r in csv.DictReader(f) if r["lkh_s"]}
+    except OSError:
+        return {}
+
+
+def _span(values: list[int | None]) -> str:
+    got = sorted(v for v in values if v is not None)
+    never = len(values) - len(got)
+    text = (f"{got[0]}" if len(got) == 1 or got[0] == got[-1] else
+            f"{got[0]}-{got[-1]}") if got else "-"
+    return text + (f", never {never}" if never else "")
+
+
+def report(runs: dict[str, list[Trace]], seeds: list[int], lkh: dict[str, float]) -> str:
+    """The three tables described in the module's text."""
+    lines = [f"instance  items  kicks to 1 %: seed {seeds[0]}  other seeds           "
+             "kicks a 1/100 LKH-3 budget allows  us a kick"]
+    for name, traces in runs.items():
+        first = traces[0]
+        allow = "-"
+        if name in lkh:
+            budget = lkh[name] / 100
+            allow = _span([int(max(0.0, budget - tr.points[0][1] - tr.after())
+                               / tr.per_kick()) for tr in traces])
+        lines.append(f"{name:8s} {first.items:6d}  {str(first.kicks_to()):>20s}  "
+                     f"{_span([tr.kicks_to() for tr in traces[1:]]):22s}"
+                     f"{allow:>34s}  {first.per_kick() * 1e6:9.1f}")
+    every = [tr for traces in runs.values() for tr in traces]
+    lines.append("")
+    lines.append("mean % over the optimum after " + ", ".join(f"{ms}" for ms in AT_MS)
+                 + " ms of CPU: " + ", ".join(f"{statistics.mean(tr.at(ms) for tr in every):.2f}"
+                                            for ms in AT_MS))
+    lines.append("")
+    lines.append(f"window  runs within 1 %   seed {seeds[0]}: CPU ms of the program / % "
+                 "(* within a hundredth of LKH-3)")
+    for w in WINDOWS:
+        cells = []
+        within = 0
+        for name, traces in runs.items():
+            stops = [tr.window(w) for tr in traces]
+            within += sum(p <= 1.0 for _, p in stops)
+            t, p = stops[0]
+            mark = "*" if p <= 1.0 and name in lkh and t <= lkh[name] / 100 else " "
+            cells.append(f"{name} {mark}{t * 1000:.0f}/{p:.2f}")
+        lines.append(f"{w:6d}  {within:4d} of {len(every):<4d}   " + ", ".join(cells))
+    return "\n".join(lines)
+
+
+def build_parser() -> argparse.ArgumentParser:
+    ap = argparse.ArgumentParser(prog="python -m bench.kicks", description=__doc__.split("\n\n")[0],
+                                 formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("--tree", type=Path, default=ROOT,
+                    help="the tree whose TENZOR is traced (default this one)")
+    ap.add_argument("--names", default=",".join(tsplib.NAMES),
+                    help="TSPLIB instances (default all of bench/tsplib/)")
+    ap.add_argument("--seeds", default=",".join(map(str, SEEDS)),
+                    help="seeds, the first reported on its own (default the six of the trials)")
+    ap.add_argument("--window", type=int, default=30,
+                    help="the traced runs' window, failed kicks an item (default 30)")
+    ap.add_argument("--lkh", type=Path, default=ROOT / "bench" / "results" / "tsplib" / "tsplib.csv",
+                    help="a tsplib.csv whose LKH-3 seconds set the budgets")
+    ap.add_argument("--out", type=Path, default=Path("out/kicks"),
+                    help="decks, tapes and traces (default out/kicks)")
+    return ap
+
+
+def main(argv: list[str] | None = None) -> int:
+    args = build_parser().parse_args(argv)
+    names = [n for n in args.names.split(",") if n]
+    bad = [n for n in names if n not in tsplib.NAMES]
+    try:
+        seeds = [int(s) for s in args.seeds.split(",") if s]
+    except ValueError:
+        seeds = []
+    if bad or not names or not seeds or args.window < max(WINDOWS):
+        print("bench.kicks: --names are of " + ", ".join(tsplib.NAMES) + "; --seeds are "
+              f"integers; --window is at least {max(WINDOWS)}", file=sys.stderr)
+        return 2
+    args.out.mkdir(parents=True, exist_ok=True)
+    try:
+        with tempfile.TemporaryDirectory(prefix="kicks-") as tmp:
+            exe = build_traced(args.tree.resolve(), Path(tmp))
+            runs = {n: [run_traced(exe, n, s, args.window, args.out) for s in seeds]
+                    for n in names}
+    except KicksError as exc:
+        print(f"bench.kicks: {exc}", file=sys.stderr)
+        return 2
+    print(report(runs, seeds, lkh_seconds(args.lkh)))
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,104 @@
+"""bench.kicks: the traced copy of TENZOR and the arithmetic of its traces.
+
+The traced copy must search exactly as TENZOR does when no variable is set
+(else its traces would measure another program), its trace must end at the
+tour the tape holds, and the instrumentation must still fit CMKICK: a
+change there that moves one of the lines it replaces fails here, not in the
+middle of a long measurement.
+"""
+from __future__ import annotations
+
+import filecmp
+import os
+import shutil
+import subprocess
+from pathlib import Path
+
+import pytest
+
+from bench import kicks, tsplib
+
+ROOT = Path(__file__).resolve().parents[2]
+CMKICK = ROOT / "legacy" / "cmkick.f"
+
+
+def test_the_trace_fits_cmkick_and_compiles(tmp_path: Path) -> None:
+    text = kicks.traced_source(CMKICK.read_text(encoding="ascii"))
+    assert "GETENV('TZTRACE'" in text and "NSTAG = NWIN * NITM" in text
+    src = tmp_path / "cmkick.f"
+    src.write_text(text, encoding="ascii")
+    gfortran = shutil.which("gfortran")
+    if gfortran is None:
+        pytest.skip("gfortran is not on PATH")
+    proc = subprocess.run([gfortran, "-fsyntax-only", "-ffixed-form", "-fimplicit-none",
+                           str(src)], capture_output=True, text=True)
+    assert proc.returncode == 0, proc.stderr
+
+
+def test_a_moved_line_is_named() -> None:
+    text = CMKICK.read_text(encoding="ascii").replace("      NSTAG = 10 * NITM\n",
+                                                      "      NSTAG = 12 * NITM\n")
+    with pytest.raises(kicks.KicksError, match=r"0 copies of the line 'NSTAG = 10 \* NITM'"):
+        kicks.traced_source(text)
+
+
+def _trace() -> kicks.Trace:
+    # 10 items; kicks kept at 3 and 40; the kicks stopped after 100; the
+    # program's CPU 23 ms, 3 of them after the kicks; 0.1 ms a kick
+    return kicks.Trace(10, [(0, 0.010, 5.0), (3, 0.011, 2.0), (40, 0.015, 0.8),
+                            (100, 0.020, 0.8)], 0.023)
+
+
+def test_reading_a_trace() -> None:
+    tr = _trace()
+    assert tr.kicks == 100 and tr.per_kick() == pytest.approx(1e-4)
+    assert tr.after() == pytest.approx(0.003)
+    assert tr.at(5) == 5.0 and tr.at(12) == 2.0 and tr.at(400) == 0.8
+    assert tr.kicks_to(1.0) == 40 and tr.kicks_to(2.0) == 3 and tr.kicks_to(0.5) is None
+
+
+def test_shorter_windows_read_off_a_trace() -> None:
+    tr = _trace()
+    # window 1: 37 kicks failed after kick 3 (more than 10): stop at kick 13
+    assert tr.window(1) == pytest.approx((0.010 + 13e-4 + 0.003, 2.0))
+    # window 5: stop 50 kicks after kick 40, at 90
+    assert tr.window(5) == pytest.approx((0.010 + 90e-4 + 0.003, 0.8))
+    # window 10: the run ended first, at kick 100: the whole program
+    assert tr.window(10) == pytest.approx((0.023, 0.8))
+
+
+def test_lengths_are_scaled_to_the_tapes_per_cent(tmp_path: Path) -> None:
+    f = tmp_path / "x.trc"
+    f.write_text("  0  1.0E-02  1100.0\n  7  1.2E-02  1050.0\n  -9  1.5E-02  1020.0\n")
+    tr = kicks.read_trace(f, 5, 2.0, 0.02)
+    assert [k for k, _, _ in tr.points] == [0, 7, 9]
+    assert tr.points[-1][2] == pytest.approx(2.0)
+    assert tr.points[0][2] == pytest.approx(100 * (1100 * 1.02 / 1020 - 1))
+    (tmp_path / "y.trc").write_text("  0  1.0E-02  1100.0\n")
+    with pytest.raises(kicks.KicksError, match="no trace"):
+        kicks.read_trace(tmp_path / "y.trc", 5, 2.0, 0.02)
+
+
+@pytest.mark.skipif(shutil.which("fpm") is None, reason="fpm is not on PATH")
+def test_the_traced_copy_searches_as_tenzor_does(tmp_path: Path) -> None:
+    """No variable set: the traced copy punches d198's tapes byte for byte
+    as this tree's TENZOR does. Traced, its last point is the tape's tour."""
+    exe = kicks.build_traced(ROOT, tmp_path / "tree")
+    plain = subprocess.run(["fpm", "run", "--profile", "release", "--runner", "echo", "tenzor"],
+                           cwd=ROOT, check=True, capture_output=True, text=True).stdout.split()[-1]
+    deck = tmp_path / "d198.crd"
+    deck.write_text(tsplib.load("d198").deck(), encoding="ascii")
+    env = {k: v for k, v in os.environ.items() if not k.startswith("TZ")}
+    for exe_, out in ((exe, "a"), (ROOT / plain, "b")):
+        subprocess.run([str(exe_), str(deck), "-o", str(tmp_path / out)], env=env, check=True,
+                       capture_output=True)
+    names = sorted(p.name for p in (tmp_path / "a").iterdir())
+    assert names and names == sorted(p.name for p in (tmp_path / "b").iterdir())
+    _, mismatch, errors = filecmp.cmpfiles(tmp_path / "a", tmp_path / "b", names,
+                                               shallow=False)
+    assert not mismatch and not errors
+    tr = kicks.run_traced(exe, "d198", 1977, 10, tmp_path)
+    assert tr.items == 198 and tr.kicks > 10 * 198
+    pcts = [p for _, _, p in tr.points]
+    assert all(b <= a + 1e-9 for a, b in zip(pcts, pcts[1:]))   # kept kicks only shorten
+    assert tr.window(10)[1] == pytest.approx(pcts[-1])
