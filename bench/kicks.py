@@ -305,9 +305,17 @@ def main(argv: list[str] | None = None) -> int:
         seeds = [int(s) for s in args.seeds.split(",") if s]
     except ValueError:
         seeds = []
-    if bad or not names or not seeds or args.window < max(WINDOWS):
-        print("bench.kicks: --names are of " + ", ".join(tsplib.NAMES) + "; --seeds are "
-              f"integers; --window is at least {max(WINDOWS)}", file=sys.stderr)
+    problem = None
+    if bad or not names:
+        problem = (f"--names {args.names!r}: the instances are of bench/tsplib/: "
+                   + ", ".join(tsplib.NAMES))
+    elif not seeds:
+        problem = f"--seeds {args.seeds!r}: give whole numbers separated by commas"
+    elif args.window < max(WINDOWS):
+        problem = (f"--window {args.window}: at least {max(WINDOWS)}, so that every "
+                   "window of the report can be read off the traces")
+    if problem is not None:
+        print(f"bench.kicks: {problem}", file=sys.stderr)
         return 2
     args.out.mkdir(parents=True, exist_ok=True)
     try:
