@@ -102,3 +102,13 @@ def test_the_traced_copy_searches_as_tenzor_does(tmp_path: Path) -> None:
     pcts = [p for _, _, p in tr.points]
     assert all(b <= a + 1e-9 for a, b in zip(pcts, pcts[1:]))   # kept kicks only shorten
     assert tr.window(10)[1] == pytest.approx(pcts[-1])
+
+
+@pytest.mark.parametrize("argv, says", [
+    (["--names", "x"], "--names 'x': the instances are of bench/tsplib/: d198"),
+    (["--seeds", "a,b"], "--seeds 'a,b': give whole numbers"),
+    (["--window", "3"], "--window 3: at least 10"),
+])
+def test_a_bad_option_is_named(argv, says, capsys) -> None:
+    assert kicks.main(argv) == 2
+    assert says in capsys.readouterr().err
