@@ -16,7 +16,6 @@ from __future__ import annotations
 
 import argparse
 import platform
-import shutil
 import subprocess
 import sys
 import time
@@ -25,21 +24,9 @@ from pathlib import Path
 
 from harness.files import write_whole
 
-from . import boards, report, run_board, tours, tsplib
+from . import boards, measure, report, run_board, tours, tsplib
 
 ROOT = Path(__file__).resolve().parents[1]
-
-
-def release_binary() -> Path:
-    """Build TENZOR optimised and return the path of the executable."""
-    fpm = shutil.which("fpm")
-    if fpm is None:
-        raise SystemExit("fpm is not on PATH: run `make bench`, or put .venv/bin on PATH")
-    subprocess.run([fpm, "build", "--profile", "release"], cwd=ROOT, check=True,
-                   capture_output=True)
-    out = subprocess.run([fpm, "run", "--profile", "release", "--runner", "echo", "tenzor"],
-                         cwd=ROOT, check=True, capture_output=True, text=True).stdout.split()
-    return ROOT / out[-1]
 
 
 def _sizes(text: str) -> list[int]:
@@ -134,7 +121,7 @@ def main(argv: Sequence[str] | None = None) -> int:
         print("--repeats must be at least 1", file=sys.stderr)
         return 2
     try:
-        exe = args.tenzor.resolve() if args.tenzor else release_binary()
+        exe = args.tenzor.resolve() if args.tenzor else measure.release_binary(ROOT)
     except subprocess.CalledProcessError as exc:
         print(f"building TENZOR failed: {exc.stderr.decode(errors='replace')}", file=sys.stderr)
         return 2

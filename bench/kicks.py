@@ -124,9 +124,8 @@ def traced_source(text: str) -> str:
 
 def build_traced(tree: Path, work: Path) -> Path:
     """Copy the Fortran of ``tree`` into ``work``, put the trace in, build
-    it with ``fpm build --profile release``; the executable's path."""
-    fpm = shutil.which("fpm")
-    if fpm is None:
+    it as the benchmark builds TENZOR; the executable's path."""
+    if shutil.which("fpm") is None:
         raise KicksError("fpm is not on PATH: put .venv/bin on PATH (make setup)")
     for part in ("legacy", "src", "app", "test"):
         if (tree / part).is_dir():
@@ -134,14 +133,12 @@ def build_traced(tree: Path, work: Path) -> Path:
     shutil.copy2(tree / "fpm.toml", work / "fpm.toml")
     kick = work / "legacy" / "cmkick.f"
     kick.write_text(traced_source(kick.read_text(encoding="ascii")), encoding="ascii")
-    proc = subprocess.run([fpm, "build", "--profile", "release"], cwd=work,
-                          capture_output=True, text=True)
-    if proc.returncode != 0:
-        raise KicksError(f"fpm build of the traced copy failed:\n{proc.stdout[-2000:]}"
-                         f"{proc.stderr[-2000:]}")
-    out = subprocess.run([fpm, "run", "--profile", "release", "--runner", "echo", "tenzor"],
-                         cwd=work, check=True, capture_output=True, text=True).stdout.split()
-    return work / out[-1]
+    try:
+        return measure.release_binary(work)
+    except subprocess.CalledProcessError as exc:
+        out = (exc.stdout or b"") + (exc.stderr or b"")
+        raise KicksError("fpm build of the traced copy failed:\n"
+                         + out.decode(errors="replace")[-3000:]) from None
 
 
 @dataclass
@@ -208,23 +205,18 @@ def run_traced(exe: Path, name: str, seed: int, window: int, scratch: Path) -> T
     """One run of the traced TENZOR on a TSPLIB instance."""
     inst = tsplib.load(name)
     deck = scratch / f"{name}.crd"
-    if not deck.exists():
-        deck.write_text(inst.deck(), encoding="ascii")
+    deck.write_text(inst.deck(), encoding="ascii")
     trc = scratch / f"{name}.{seed}.trc"
     trc.unlink(missing_ok=True)
     out = scratch / name
-    out.mkdir(exist_ok=True)
     env = dict(os.environ, TZTRACE=str(trc), TZSEED=str(seed), TZWIN=str(window))
-    proc = subprocess.Popen([str(exe), str(deck), "-o", str(out)], env=env,
-                            stdout=subprocess.DEVNULL, stderr=subprocess.PIPE)
-    _, status, usage = os.wait4(proc.pid, 0)
-    proc.returncode = os.waitstatus_to_exitcode(status)
-    if proc.returncode != 0:
-        raise KicksError(f"traced tenzor on {name} exited {proc.returncode}")
+    try:
+        _, cpu = measure.run_once(exe, deck, out, env)
+    except RuntimeError as exc:
+        raise KicksError(str(exc)) from None
     stats = measure.read_tapes(out, inst.name.upper()[:8])
     length = inst.tour_length(tsplib.tenzor_cycle(inst, stats["small"].run))
-    return read_trace(trc, len(inst.nodes), 100 * (length / inst.optimum - 1),
-                      usage.ru_utime + usage.ru_stime)
+    return read_trace(trc, len(inst.nodes), 100 * (length / inst.optimum - 1), cpu)
 
 
 def lkh_seconds(path: Path) -> dict[str, float]:

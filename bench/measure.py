@@ -45,16 +45,34 @@ def _check(proc: subprocess.Popen, deck: Path) -> None:
         raise RuntimeError(f"tenzor {deck} exited {proc.returncode}: {err.strip()[:500]}")
 
 
-def _start(exe: Path, deck: Path, out: Path) -> subprocess.Popen:
+def release_binary(tree: Path) -> Path:
+    """Build the TENZOR of ``tree`` optimised (``fpm build --profile
+    release``) and return the path of the executable.  SystemExit when fpm
+    is not on PATH; CalledProcessError (its output captured) when the build
+    fails."""
+    fpm = shutil.which("fpm")
+    if fpm is None:
+        raise SystemExit("fpm is not on PATH: run `make bench`, or put .venv/bin on PATH")
+    subprocess.run([fpm, "build", "--profile", "release"], cwd=tree, check=True,
+                   capture_output=True)
+    out = subprocess.run([fpm, "run", "--profile", "release", "--runner", "echo", "tenzor"],
+                         cwd=tree, check=True, capture_output=True, text=True).stdout.split()
+    return tree / out[-1]
+
+
+def _start(exe: Path, deck: Path, out: Path,
+           env: dict[str, str] | None = None) -> subprocess.Popen:
     out.mkdir(parents=True, exist_ok=True)
-    return subprocess.Popen([str(exe), str(deck), "-o", str(out)],
+    return subprocess.Popen([str(exe), str(deck), "-o", str(out)], env=env,
                             stdout=subprocess.DEVNULL, stderr=subprocess.PIPE)
 
 
-def run_once(exe: Path, deck: Path, out: Path) -> tuple[float, float]:
+def run_once(exe: Path, deck: Path, out: Path,
+             env: dict[str, str] | None = None) -> tuple[float, float]:
     """One run of TENZOR, deck to tapes: (wall seconds, CPU seconds, user
     and system, of that process from ``os.wait4``).  Raises RuntimeError if
-    it does not exit 0.
+    it does not exit 0.  ``env``: the process's environment, if not this
+    one's.
 
     The output directory is emptied first (outside the timing), so every run
     writes new files as a first run does: replacing the files of the run
@@ -63,7 +81,7 @@ def run_once(exe: Path, deck: Path, out: Path) -> tuple[float, float]:
     ``auto_da_alloc``), which is the disk's time, not TENZOR's."""
     shutil.rmtree(out, ignore_errors=True)
     t = time.perf_counter()
-    proc = _start(exe, deck, out)
+    proc = _start(exe, deck, out, env)
     _, status, usage = os.wait4(proc.pid, 0)
     seconds = time.perf_counter() - t
     proc.returncode = os.waitstatus_to_exitcode(status)

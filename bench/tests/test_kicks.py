@@ -16,7 +16,7 @@ from pathlib import Path
 
 import pytest
 
-from bench import kicks, tsplib
+from bench import kicks, measure, tsplib
 
 ROOT = Path(__file__).resolve().parents[2]
 CMKICK = ROOT / "legacy" / "cmkick.f"
@@ -84,12 +84,11 @@ def test_the_traced_copy_searches_as_tenzor_does(tmp_path: Path) -> None:
     """No variable set: the traced copy punches d198's tapes byte for byte
     as this tree's TENZOR does. Traced, its last point is the tape's tour."""
     exe = kicks.build_traced(ROOT, tmp_path / "tree")
-    plain = subprocess.run(["fpm", "run", "--profile", "release", "--runner", "echo", "tenzor"],
-                           cwd=ROOT, check=True, capture_output=True, text=True).stdout.split()[-1]
+    plain = measure.release_binary(ROOT)
     deck = tmp_path / "d198.crd"
     deck.write_text(tsplib.load("d198").deck(), encoding="ascii")
     env = {k: v for k, v in os.environ.items() if not k.startswith("TZ")}
-    for exe_, out in ((exe, "a"), (ROOT / plain, "b")):
+    for exe_, out in ((exe, "a"), (plain, "b")):
         subprocess.run([str(exe_), str(deck), "-o", str(tmp_path / out)], env=env, check=True,
                        capture_output=True)
     names = sorted(p.name for p in (tmp_path / "a").iterdir())
