@@ -180,7 +180,7 @@ class Trace:
         """Stopped after ``w`` * items failed kicks in a row: (CPU seconds
         of the whole program, per cent). The trace's own window must be at
         least ``w``; past its end the run ends as it did."""
-        k0, t0, _ = self.points[0]
+        t0 = self.points[0][1]
         last = self.points[0]
         for point in self.points[1:-1] + [(self.kicks + 10**9, 0.0, 0.0)]:
             if point[0] - last[0] > w * self.items:
@@ -247,7 +247,8 @@ def report(runs: dict[str, list[Trace]], seeds: list[int], lkh: dict[str, float]
             budget = lkh[name] / 100
             allow = _span([int(max(0.0, budget - tr.points[0][1] - tr.after())
                                / tr.per_kick()) for tr in traces])
-        lines.append(f"{name:8s} {first.items:6d}  {str(first.kicks_to()):>20s}  "
+        k1 = first.kicks_to()
+        lines.append(f"{name:8s} {first.items:6d}  {'never' if k1 is None else k1:>20}  "
                      f"{_span([tr.kicks_to() for tr in traces[1:]]):22s}"
                      f"{allow:>34s}  {first.per_kick() * 1e6:9.1f}")
     every = [tr for traces in runs.values() for tr in traces]

@@ -111,3 +111,11 @@ def test_the_traced_copy_searches_as_tenzor_does(tmp_path: Path) -> None:
 def test_a_bad_option_is_named(argv, says, capsys) -> None:
     assert kicks.main(argv) == 2
     assert says in capsys.readouterr().err
+
+
+def test_the_report_names_a_run_that_never_came_within_1_per_cent() -> None:
+    never = kicks.Trace(10, [(0, 0.010, 5.0), (100, 0.020, 2.0)], 0.023)
+    text = kicks.report({"d198": [never, _trace()]}, [1977, 12345], {"d198": 0.5})
+    row = next(line for line in text.splitlines() if line.startswith("d198"))
+    assert row.split()[2] == "never" and "40" in row.split()[3]
+    assert "1 of 2" in text.splitlines()[-1]          # window 10: only the second run
