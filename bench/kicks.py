@@ -7,7 +7,7 @@ itself is not touched), whose ``CMKICK`` also
 
 * takes its seed from the environment variable ``TZSEED`` (default 1977,
   TENZOR's own) and its window, the failed kicks an item after which the
-  kicks stop, from ``TZWIN`` (default 10, TENZOR's own);
+  kicks stop, from ``TZWIN`` (default 1, TENZOR's own);
 * on a tape of more than 150 items (on a TSPLIB deck, the small-pad tape:
   the others are empty) appends to the file ``TZTRACE`` names a line when
   the kicks begin, one at each kick kept and one when they stop: the
@@ -75,7 +75,7 @@ PATCH: tuple[tuple[str, str], ...] = (
      "      ISEED = 1977\n"
      "      CALL GETENV('TZSEED', ENVV)\n"
      "      IF (ENVV .NE. ' ') READ (ENVV, *) ISEED\n"
-     "      NWIN = 10\n"
+     "      NWIN = 1\n"
      "      CALL GETENV('TZWIN', ENVV)\n"
      "      IF (ENVV .NE. ' ') READ (ENVV, *) NWIN\n"
      "      ITRC = 0\n"
@@ -86,7 +86,7 @@ PATCH: tuple[tuple[str, str], ...] = (
      "         CALL CPU_TIME(TCPU)\n"
      "         WRITE (77, *) 0, TCPU, CMTLEN()\n"
      "      END IF\n"),
-    ("      NSTAG = 10 * NITM\n",
+    ("      NSTAG = NITM\n",
      "      NSTAG = NWIN * NITM\n"),
     ("            KLAST = KK\n",
      "            KLAST = KK\n"

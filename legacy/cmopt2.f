@@ -8,11 +8,18 @@ C              DIRECTION. A NEW MOVE EXIT-EXIT IS ONLY TRIED TOWARDS ONE
 C              OF THE NEAREST ENDS (KNB), AND ONLY IF SHORTER THAN THE
 C              MOVE IT REPLACES; LIKEWISE ENTRY-ENTRY. WHEN NO 2-OPT
 C              MOVE HELPS AN ITEM, OR-OPT (CMOROP) TRIES TO MOVE IT,
-C              WITH THE ONE OR TWO AFTER IT, ELSEWHERE. ITEMS ARE TAKEN
-C              FROM A QUEUE; AN ITEM WHOSE NEIGHBOURS CHANGE GOES BACK
-C              ON IT. ROUND 1 IS 2-OPT ALONE; EACH FURTHER ROUND (AT
-C              MOST 10) QUEUES EVERY ITEM AGAIN AND ADDS OR-OPT, UNTIL A
-C              ROUND MAKES NO MOVE OR THE WORK BOUND IS REACHED.
+C              WITH THE ONE OR TWO AFTER IT, ELSEWHERE, AND IN A PACKAGE
+C              OF AT MOST 20000 ITEMS OR-3OPT (CMOR3) A RUN OF ANY
+C              LENGTH FROM IT. THE FIRST AND LAST ITEMS ALSO TRY THE
+C              2-OPT MOVES SEEN FROM THE TOOL'S START AND THE START
+C              POINT, WHICH HAVE NEAR ENDS OF THEIR OWN (CMKDEP) BUT ARE
+C              NOT ITEMS: WITHOUT THEM A START POINT OFF THE PADS KEPT
+C              ITS LONG MOVES TILL A KICK HAPPENED TO CUT THEM. ITEMS
+C              ARE TAKEN FROM A QUEUE; AN ITEM WHOSE NEIGHBOURS CHANGE
+C              GOES BACK ON IT. ROUND 1 IS 2-OPT ALONE; EACH FURTHER
+C              ROUND (AT MOST 10) QUEUES EVERY ITEM AGAIN AND ADDS
+C              OR-OPT, UNTIL A ROUND MAKES NO MOVE OR THE WORK BOUND IS
+C              REACHED.
 C     IMODE   (INPUT)  INTEGER  0 = THE ROUNDS ABOVE, FROM A NEW TOUR;
 C                               1 = ONLY THE ITEMS ALREADY QUEUED AND
 C                               THOSE THEIR MOVES QUEUE, 2-OPT AND
@@ -63,9 +70,15 @@ C     THE LENGTH THE MOVES SINCE THE KICK HAVE TAKEN OFF THE TOUR ------
       DOUBLE PRECISION DGAIN
       COMMON /CMTWJ/ DGAIN, NJRN, LJRN, KJWK, KJLO, KJHI, KJIT, KJOR
       SAVE /CMTWJ/
+C     ---- /CMTWE/ THE NEAR ENDS OF THE TOOL'S START (1) AND OF THE
+C     START POINT (2), AND THEIR LENGTHS ------------------------------
+      INTEGER KENB(MXNB, 2), NENB(2)
+      DOUBLE PRECISION DENB(MXNB, 2)
+      COMMON /CMTWE/ DENB, KENB, NENB
+      SAVE /CMTWE/
 C     ---- LOCAL -------------------------------------------------------
       INTEGER M, IP, J, K, IE, IQ, M2, IA, IB, ISIDE, LIMP, NROUND,
-     1        NMOVE, IX2, IY2, IX4, IY4, IE4
+     1        NMOVE, IX2, IY2, IX4, IY4, IE4, IX3, IY3
       DOUBLE PRECISION D1, DQ, GAIN, DIST
       INTEGER JX1, JY1, JX2, JY2
       INTEGER KIN, KOUT, MM
@@ -195,9 +208,92 @@ C           ---- TAKE THE MOVE; LOOK AGAIN AT THE FOUR ITEMS CONCERNED -
             GOTO 25
    50    CONTINUE
    60 CONTINUE
+C     ---- THE FIRST OR LAST MOVE, FROM THE FIXED POINT'S SIDE ---------
+C     (CMKDEP): THE LAST ITEM L, THE START POINT T AND AN ITEM Q AT J
+C     WHOSE ENTRY IS NEAR T: REVERSING J..NITM JOINS THE ITEM BEFORE
+C     Q TO L AND Q TO T. LIKEWISE THE FIRST ITEM, THE TOOL'S START
+C     AND AN ITEM WHOSE EXIT IS NEAR IT, REVERSING 1..J.
+      IP = IPOS(M)
+      IF (IP .EQ. NITM) THEN
+         IE = KOUT(M)
+         D1 = DIST(KQX(IE), KQY(IE), KDTX, KDTY)
+         DO 70 K = 1, NENB(2)
+            IQ = KENB(K, 2)
+            DQ = DENB(K, 2)
+            IF (DQ .GE. D1 - 1.0D-6) GOTO 80
+            M2 = (IQ + 1) / 2
+            IF (KQX(2*M2) .NE. KQX(2*M2-1) .OR.
+     1          KQY(2*M2) .NE. KQY(2*M2-1)) THEN
+               IF (IQ .NE. KIN(M2)) GOTO 70
+            END IF
+            J = IPOS(M2)
+            IF (J .GE. NITM) GOTO 70
+            IF (J .GT. 1) THEN
+               IE4 = KOUT(ITOUR(J - 1))
+               IX3 = KQX(IE4)
+               IY3 = KQY(IE4)
+            ELSE
+               IX3 = KDSX
+               IY3 = KDSY
+            END IF
+            GAIN = D1 + DIST(IX3, IY3, KQX(IQ), KQY(IQ))
+     1           - DQ - DIST(IX3, IY3, KQX(IE), KQY(IE))
+            IF (GAIN .LE. 1.0D-6) GOTO 70
+            CALL CMTREV(J, NITM)
+            DGAIN = DGAIN + GAIN
+            NMOVE = NMOVE + 1
+            IF (J .GT. 1) CALL CMQPSH(ITOUR(J - 1))
+            CALL CMQPSH(ITOUR(J))
+            CALL CMQPSH(ITOUR(NITM))
+            IF (KWORK .GT. KWMAX) RETURN
+            GOTO 25
+   70    CONTINUE
+      END IF
+   80 CONTINUE
+      IF (IP .EQ. 1) THEN
+         IE = KIN(M)
+         D1 = DIST(KDSX, KDSY, KQX(IE), KQY(IE))
+         DO 90 K = 1, NENB(1)
+            IQ = KENB(K, 1)
+            DQ = DENB(K, 1)
+            IF (DQ .GE. D1 - 1.0D-6) GOTO 100
+            M2 = (IQ + 1) / 2
+            IF (KQX(2*M2) .NE. KQX(2*M2-1) .OR.
+     1          KQY(2*M2) .NE. KQY(2*M2-1)) THEN
+               IF (IQ .NE. KOUT(M2)) GOTO 90
+            END IF
+            J = IPOS(M2)
+            IF (J .LE. 1) GOTO 90
+            IF (J .LT. NITM) THEN
+               IE4 = KIN(ITOUR(J + 1))
+               IX3 = KQX(IE4)
+               IY3 = KQY(IE4)
+            ELSE
+               IX3 = KDTX
+               IY3 = KDTY
+            END IF
+            GAIN = D1 + DIST(KQX(IQ), KQY(IQ), IX3, IY3)
+     1           - DQ - DIST(KQX(IE), KQY(IE), IX3, IY3)
+            IF (GAIN .LE. 1.0D-6) GOTO 90
+            CALL CMTREV(1, J)
+            DGAIN = DGAIN + GAIN
+            NMOVE = NMOVE + 1
+            CALL CMQPSH(ITOUR(1))
+            CALL CMQPSH(ITOUR(J))
+            IF (J .LT. NITM) CALL CMQPSH(ITOUR(J + 1))
+            IF (KWORK .GT. KWMAX) RETURN
+            GOTO 25
+   90    CONTINUE
+      END IF
+  100 CONTINUE
 C     ---- NO 2-OPT MOVE: TRY MOVING THE ITEM ELSEWHERE ----------------
       LIMP = 0
       IF (NROUND .GT. 1) CALL CMOROP(M, LIMP)
+C     IN A PACKAGE OF AT MOST 20000 ITEMS ALSO A RUN OF ANY LENGTH
+C     (CMOR3): IT MAKES A KICK'S REPAIR ABOUT TWICE AS DEAR, WHICH THE
+C     100000-PAD BOARDS' TIME CANNOT TAKE
+      IF (NROUND .GT. 1 .AND. LIMP .EQ. 0 .AND. NJOB .LE. 20000)
+     1   CALL CMOR3(M, LIMP)
       NMOVE = NMOVE + LIMP
       IF (LIMP .EQ. 1 .AND. KWORK .LE. KWMAX) GOTO 25
       GOTO 20
