@@ -143,10 +143,10 @@ MUTANTS = [
            "the kicks' bound of a tape counts its own items, not its package's"),
     Mutant("legacy/cmopt2.f", "      IF (IP .EQ. NITM) THEN", "      IF (IP .EQ. -1) THEN",
            "the last move is never tried from the start point's side"),
-    Mutant("legacy/cmopt2.f", "      IF (IP .EQ. 1) THEN", "      IF (IP .EQ. -1) THEN",
-           "the first move is never tried from the tool's start's side"),
     Mutant("legacy/cmopt2.f", "LIMP .EQ. 0 .AND. NJOB .LE. 20000)", "LIMP .EQ. 0 .AND. NJOB .LE. 0)",
            "Or-3opt never tried"),
+    Mutant("legacy/cmopt2.f", "      IF (IP .EQ. 1) THEN", "      IF (IP .EQ. -1) THEN",
+           "the first move is never tried from the tool's start's side"),
 ]
 
 TESTS = ["python", "-m", "pytest", "-q", "-x", "--tb=no", "-rf", "-p", "no:cacheprovider", "-m",
