@@ -55,7 +55,7 @@ def test_tenzor_tours_d198(tenzor_exe, tmp_path):
     assert report.tsplib_table([row]).count("d198") == 1
 
 
-@pytest.mark.parametrize("name", ["d198", "pcb442", "u574", "d1291", "pcb3038"])
+@pytest.mark.parametrize("name", ["d198", "pcb442", "u574", "pcb1173", "d1291", "pcb3038"])
 def test_tenzor_tour_is_the_recorded_one(name, tenzor_exe, tmp_path):
     """The tour's search is deterministic: a fixed seed, and bounds that are
     counts, not seconds (docs/RECONSTRUCTION.md, order). So TENZOR's tour
