@@ -54,6 +54,23 @@ def test_filling_md_row_excerpt_is_the_demo_tape(run_tenzor):
     assert frames[1:1 + len(quoted)] == quoted
 
 
+def test_files_md_listing_excerpt_is_the_demo_listing(run_tenzor):
+    """docs/FILES.md quotes lines of the demo's listing (the small-pad tape's
+    statistics, the order and kicks lines, the verdict), in order, with
+    `...` for what it leaves out. The kicks line pins the kicks made, kept
+    and their work, which no tape shows: an undone kick's reversals left out
+    of the work count changes it and no recorded tour."""
+    text = (ROOT / "docs" / "FILES.md").read_text()
+    block = text.split("## The listing, `.lst`", 1)[1].split("```", 2)[1]
+    quoted = [line for line in block.strip("\n").splitlines() if line != "..."]
+    proc, out = run_tenzor(ROOT / "examples" / "demo.crd")
+    assert proc.returncode == 0
+    listing = (out / "LOGIC-CARD-A.lst").read_text().splitlines()
+    at = [listing.index(line) if line in listing else -1 for line in quoted]
+    assert -1 not in at, [q for q, i in zip(quoted, at) if i < 0]
+    assert at == sorted(at)
+
+
 def test_filling_pictures_are_current(tmp_path):
     """docs/img/filling*.svg are what scripts/pictures.sh draws now."""
     import subprocess
