@@ -75,8 +75,9 @@ def test_tenzor_tour_is_the_recorded_one(name, tenzor_exe, tmp_path):
     is here because the near-end lists' tie rule at the sixteenth end,
     which its drilling grid meets, changes its tour and none of the
     others'. pcb1173 is here because the first move tried from the tool's
-    start's side changes its tour and none of the others', and so does
-    leaving an undone kick's reversals out of the work bound.) Whether a
+    start's side changes its tour and none of the others'. The work bound's
+    count, an undone kick's reversals included, which pcb3038 pinned, is
+    pinned now by the demo's listing in docs/FILES.md.) Whether a
     recorded tour is within 1 % of the optimum is the benchmark's verdict
     (`make bench` prints MET or MISSED), not this test's: pcb1173's is
     not."""
