@@ -8,15 +8,16 @@ C              LOOKED FOR FROM THEIR SIDE: ON A BOARD WHOSE START POINT
 C              LIES OFF THE PADS, THE FIRST AND LAST MOVES OF THE TOUR
 C              STAYED LONG UNTIL A KICK HAPPENED TO CUT THEM. HERE THE
 C              MXNB NEAREST ENDS OF EACH (NEAREST FIRST, TIES BY THE
-C              LOWER END) ARE FOUND BY LOOKING AT EVERY END ONCE; THE
-C              EXIT OF AN ITEM WHOSE ENDS ARE ONE POINT IS LEFT OUT, AS
-C              IN CMKNN. CMOPT2 USES THEM.
-C     NP      (INPUT)  INTEGER  THE ENDS, 2 * NITM
+C              LOWER END) ARE FOUND BY LOOKING ONCE AT EVERY END ON THE
+C              GRID OF CMKNN (KCEL, LEFT BY CMGRID: ALL ENDS BUT THE
+C              EXIT OF AN ITEM WHOSE ENDS ARE ONE POINT). CMOPT2 USES
+C              THEM.
+C     NL      (INPUT)  INTEGER  THE ENDS LISTED IN KCEL(1..NL)
 C     CHANGES: SEE THE HISTORY OF THE REPOSITORY (GIT LOG)
 C=======================================================================
-      SUBROUTINE CMKDEP(NP)
+      SUBROUTINE CMKDEP(NL)
       IMPLICIT NONE
-      INTEGER NP
+      INTEGER NL
 C     ---- /CMITM/ THE ITEMS OF A TAPE AND THE TOUR THROUGH THEM -------
       INTEGER MXITM
       PARAMETER (MXITM = 300000)
@@ -45,7 +46,7 @@ C     START POINT (2), AND THEIR LENGTHS ------------------------------
       COMMON /CMTWE/ DENB, KENB, NENB
       SAVE /CMTWE/
 C     ---- LOCAL -------------------------------------------------------
-      INTEGER I, K, IX, IY
+      INTEGER I, J, K, IX, IY
       DOUBLE PRECISION D
 C
       DO 30 K = 1, 2
@@ -57,11 +58,8 @@ C
             IY = KDTY
          END IF
          NENB(K) = 0
-         DO 10 I = 1, NP
-            IF (MOD(I, 2) .EQ. 0) THEN
-               IF (KQX(I) .EQ. KQX(I - 1) .AND.
-     1             KQY(I) .EQ. KQY(I - 1)) GOTO 10
-            END IF
+         DO 10 J = 1, NL
+            I = KCEL(J)
             D = (DBLE(IX) - KQX(I))**2 + (DBLE(IY) - KQY(I))**2
             CALL CMKINS(KENB(1, K), DENB(1, K), NENB(K), MXNB, I, D)
    10    CONTINUE
