@@ -63,6 +63,8 @@ def test_files_md_listing_excerpt_is_the_demo_listing(run_tenzor):
     text = (ROOT / "docs" / "FILES.md").read_text()
     block = text.split("## The listing, `.lst`", 1)[1].split("```", 2)[1]
     quoted = [line for line in block.strip("\n").splitlines() if line != "..."]
+    # the quote must still hold what the test is for, or it would pass empty
+    assert any(line.lstrip().startswith("KICKS ") for line in quoted), block
     proc, out = run_tenzor(ROOT / "examples" / "demo.crd")
     assert proc.returncode == 0
     listing = (out / "LOGIC-CARD-A.lst").read_text().splitlines()
