@@ -49,7 +49,7 @@ C     ---- LOCAL -------------------------------------------------------
       CHARACTER*28 WHY(4)
       DATA TNAME / 'S', 'B', 'L' /
       DATA WHY / 'FEWER THAN 8 ITEMS', 'ALL MADE',
-     1           'NO GAIN IN ONE KICK AN ITEM', 'THE WORK BOUND' /
+     1           'NO GAIN IN A ROW OF KICKS', 'THE WORK BOUND' /
       DATA WHAT / 'SMALL PADS', 'LARGE PADS', 'CONDUCTORS' /
       DATA SUF / '-small.ptp', '-large.ptp', '-cond.ptp' /
 C
