@@ -6,8 +6,9 @@ builds a *traced* copy of a tree's TENZOR in a temporary directory (the tree
 itself is not touched), whose ``CMKICK`` also
 
 * takes its seed from the environment variable ``TZSEED`` (default 1977,
-  TENZOR's own) and its window, the failed kicks an item after which the
-  kicks stop, from ``TZWIN`` (default 1, TENZOR's own);
+  TENZOR's own) and its window, the failed kicks in a row after which the
+  kicks stop, in quarters of a kick an item, from ``TZWIN`` (default 1,
+  TENZOR's own: a quarter of a kick an item);
 * on a tape of more than 150 items (on a TSPLIB deck, the small-pad tape:
   the others are empty) appends to the file ``TZTRACE`` names a line when
   the kicks begin, one at each kick kept and one when they stop: the
@@ -20,9 +21,9 @@ in by replacing lines of ``legacy/cmkick.f`` (:data:`PATCH`); if that file
 has changed so that a line is no longer there, the tool says which.
 
 Each instance of ``bench/tsplib/`` is run once with each seed under a long
-window (30 by default), so that every shorter window can be read off the
-same trace: a window of W stops the kicks after W * N kicks in a row that
-all failed, at a time found from the trace's own cost of a kick. The tour's
+window (40 quarters, ten kicks an item, by default), so that every shorter
+window can be read off the same trace: a window of W stops the kicks after
+W * N / 4 kicks in a row that all failed, at a time found from the trace's own cost of a kick. The tour's
 per cent over the proven optimum is that of its TSPLIB length
 (:mod:`bench.tsplib`), each trace's lengths scaled by the ratio of the two
 at the trace's end. Printed, per instance: the kicks to come within 1 %
@@ -30,8 +31,9 @@ with the first seed and with the others, the kicks a budget of a hundredth
 of LKH-3's time allows (LKH-3's seconds read from the recorded TSPLIB run,
 ``--lkh``, as the hour of that run may not be this one's), the cost of a
 kick; then the mean per cent over the optimum after 25 to 400 ms of CPU;
-then, for windows of 1 to 10 kicks an item, the runs within 1 % and the
-first seed's CPU time to the end of the program and per cent.
+then, for windows of a quarter to five kicks an item (1 to 20 quarters),
+the runs within 1 % and the first seed's CPU time to the end of the program
+and per cent.
 
     python -m bench.kicks                                  # this tree, eleven instances, six seeds
     python -m bench.kicks --tree ../trial --names d493,pcb1173 --seeds 1977,12345
@@ -57,8 +59,9 @@ ROOT = Path(__file__).resolve().parents[1]
 SEEDS: tuple[int, ...] = (1977, 12345, 777, 4242, 99, 31337)
 #: Times (ms of CPU) at which the mean per cent is read.
 AT_MS: tuple[int, ...] = (25, 50, 100, 200, 400)
-#: Windows (failed kicks an item) read off each trace.
-WINDOWS: tuple[int, ...] = (1, 2, 3, 5, 10)
+#: Windows (failed kicks in a row, in quarters of a kick an item) read off
+#: each trace.
+WINDOWS: tuple[int, ...] = (1, 2, 4, 8, 20)
 #: Tapes of at most this many items are not traced.
 TRACE_ABOVE = 150
 
@@ -86,8 +89,8 @@ PATCH: tuple[tuple[str, str], ...] = (
      "         CALL CPU_TIME(TCPU)\n"
      "         WRITE (77, *) 0, TCPU, CMTLEN()\n"
      "      END IF\n"),
-    ("      NSTAG = NITM\n",
-     "      NSTAG = NWIN * NITM\n"),
+    ("      IF (MODE .EQ. 2) NSTAG = MAX(NITM / 4, 1)\n",
+     "      IF (MODE .EQ. 2) NSTAG = MAX(NWIN * NITM / 4, 1)\n"),
     ("            KLAST = KK\n",
      "            KLAST = KK\n"
      "            IF (ITRC .EQ. 1) THEN\n"
@@ -177,14 +180,16 @@ class Trace:
         return next((k for k, _, p in self.points if p <= pct), None)
 
     def window(self, w: int) -> tuple[float, float]:
-        """Stopped after ``w`` * items failed kicks in a row: (CPU seconds
-        of the whole program, per cent). The trace's own window must be at
-        least ``w``; past its end the run ends as it did."""
+        """Stopped after ``w`` * items / 4 failed kicks in a row (at least
+        one, as CMKICK counts them): (CPU seconds of the whole program, per
+        cent). The trace's own window must be at least ``w``; past its end
+        the run ends as it did."""
         t0 = self.points[0][1]
         last = self.points[0]
+        stag = max(w * self.items // 4, 1)
         for point in self.points[1:-1] + [(self.kicks + 10**9, 0.0, 0.0)]:
-            if point[0] - last[0] > w * self.items:
-                stop = min(last[0] + w * self.items, self.kicks)
+            if point[0] - last[0] > stag:
+                stop = min(last[0] + stag, self.kicks)
                 return t0 + self.per_kick() * stop + self.after(), last[2]
             last = point
         return self.cpu, self.points[-1][2]
@@ -257,6 +262,7 @@ def report(runs: dict[str, list[Trace]], seeds: list[int], lkh: dict[str, float]
                  + " ms of CPU: " + ", ".join(f"{statistics.mean(tr.at(ms) for tr in every):.2f}"
                                             for ms in AT_MS))
     lines.append("")
+    lines.append("window (quarters of a failed kick an item)")
     lines.append(f"window  runs within 1 %   seed {seeds[0]}: CPU ms of the program / % "
                  "(* within a hundredth of LKH-3)")
     for w in WINDOWS:
@@ -281,8 +287,9 @@ def build_parser() -> argparse.ArgumentParser:
                     help="TSPLIB instances (default all of bench/tsplib/)")
     ap.add_argument("--seeds", default=",".join(map(str, SEEDS)),
                     help="seeds, the first reported on its own (default the six of the trials)")
-    ap.add_argument("--window", type=int, default=30,
-                    help="the traced runs' window, failed kicks an item (default 30)")
+    ap.add_argument("--window", type=int, default=40,
+                    help="the traced runs' window, in quarters of a failed kick an item "
+                         "(default 40: ten kicks an item)")
     ap.add_argument("--lkh", type=Path, default=ROOT / "bench" / "results" / "tsplib" / "tsplib.csv",
                     help="a tsplib.csv whose LKH-3 seconds set the budgets")
     ap.add_argument("--out", type=Path, default=Path("out/kicks"),

@@ -24,7 +24,7 @@ CMKICK = ROOT / "legacy" / "cmkick.f"
 
 def test_the_trace_fits_cmkick_and_compiles(tmp_path: Path) -> None:
     text = kicks.traced_source(CMKICK.read_text(encoding="ascii"))
-    assert "GETENV('TZTRACE'" in text and "NSTAG = NWIN * NITM" in text
+    assert "GETENV('TZTRACE'" in text and "NSTAG = MAX(NWIN * NITM / 4, 1)" in text
     src = tmp_path / "cmkick.f"
     src.write_text(text, encoding="ascii")
     gfortran = shutil.which("gfortran")
@@ -36,9 +36,11 @@ def test_the_trace_fits_cmkick_and_compiles(tmp_path: Path) -> None:
 
 
 def test_a_moved_line_is_named() -> None:
-    text = CMKICK.read_text(encoding="ascii").replace("      NSTAG = NITM\n",
-                                                      "      NSTAG = 2 * NITM\n")
-    with pytest.raises(kicks.KicksError, match=r"0 copies of the line 'NSTAG = NITM'"):
+    text = CMKICK.read_text(encoding="ascii").replace(
+        "      IF (MODE .EQ. 2) NSTAG = MAX(NITM / 4, 1)\n",
+        "      IF (MODE .EQ. 2) NSTAG = MAX(NITM / 2, 1)\n")
+    with pytest.raises(kicks.KicksError,
+                       match=r"0 copies of the line 'IF \(MODE \.EQ\. 2\) NSTAG = MAX\(NITM / 4, 1\)'"):
         kicks.traced_source(text)
 
 
@@ -59,12 +61,15 @@ def test_reading_a_trace() -> None:
 
 def test_shorter_windows_read_off_a_trace() -> None:
     tr = _trace()
-    # window 1: 37 kicks failed after kick 3 (more than 10): stop at kick 13
-    assert tr.window(1) == pytest.approx((0.010 + 13e-4 + 0.003, 2.0))
-    # window 5: stop 50 kicks after kick 40, at 90
-    assert tr.window(5) == pytest.approx((0.010 + 90e-4 + 0.003, 0.8))
-    # window 10: the run ended first, at kick 100: the whole program
-    assert tr.window(10) == pytest.approx((0.023, 0.8))
+    # window 1 (a quarter kick an item: 10 // 4 = 2 kicks): 37 kicks failed
+    # after kick 3: stop at kick 5
+    assert tr.window(1) == pytest.approx((0.010 + 5e-4 + 0.003, 2.0))
+    # window 4 (10 kicks): stop at kick 13
+    assert tr.window(4) == pytest.approx((0.010 + 13e-4 + 0.003, 2.0))
+    # window 20 (50 kicks): stop 50 kicks after kick 40, at 90
+    assert tr.window(20) == pytest.approx((0.010 + 90e-4 + 0.003, 0.8))
+    # window 40: the run ended first, at kick 100: the whole program
+    assert tr.window(40) == pytest.approx((0.023, 0.8))
 
 
 def test_lengths_are_scaled_to_the_tapes_per_cent(tmp_path: Path) -> None:
@@ -96,17 +101,17 @@ def test_the_traced_copy_searches_as_tenzor_does(tmp_path: Path) -> None:
     _, mismatch, errors = filecmp.cmpfiles(tmp_path / "a", tmp_path / "b", names,
                                                shallow=False)
     assert not mismatch and not errors
-    tr = kicks.run_traced(exe, "d198", 1977, 10, tmp_path)
+    tr = kicks.run_traced(exe, "d198", 1977, 40, tmp_path)
     assert tr.items == 198 and tr.kicks > 10 * 198
     pcts = [p for _, _, p in tr.points]
     assert all(b <= a + 1e-9 for a, b in zip(pcts, pcts[1:]))   # kept kicks only shorten
-    assert tr.window(10)[1] == pytest.approx(pcts[-1])
+    assert tr.window(40)[1] == pytest.approx(pcts[-1])
 
 
 @pytest.mark.parametrize("argv, says", [
     (["--names", "x"], "--names 'x': the instances are of bench/tsplib/: d198"),
     (["--seeds", "a,b"], "--seeds 'a,b': give whole numbers"),
-    (["--window", "3"], "--window 3: at least 10"),
+    (["--window", "3"], "--window 3: at least 20"),
 ])
 def test_a_bad_option_is_named(argv, says, capsys) -> None:
     assert kicks.main(argv) == 2
@@ -118,4 +123,4 @@ def test_the_report_names_a_run_that_never_came_within_1_per_cent() -> None:
     text = kicks.report({"d198": [never, _trace()]}, [1977, 12345], {"d198": 0.5})
     row = next(line for line in text.splitlines() if line.startswith("d198"))
     assert row.split()[2] == "never" and "40" in row.split()[3]
-    assert "1 of 2" in text.splitlines()[-1]          # window 10: only the second run
+    assert "1 of 2" in text.splitlines()[-1]          # window 20: only the second run

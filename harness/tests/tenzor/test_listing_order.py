@@ -19,7 +19,7 @@ HEAD = re.compile(r"^ TAPE (\w)  .*FILE (\S+)")
 ORDER = re.compile(r"^ {8}ORDER  NEAREST NEIGHBOUR +([\d.]+) MM   2-OPT, OR-OPT +([\d.]+) MM"
                    r"   KICKS +([\d.]+) MM$")
 KICKS = re.compile(r"^ {8}KICKS +(\d+) OF +(\d+), +(\d+) KEPT   WORK +(\d+) OF +(\d+)"
-                   r"   STOPPED: (ALL MADE|NO GAIN IN ONE KICK AN ITEM|THE WORK BOUND)$")
+                   r"   STOPPED: (ALL MADE|NO GAIN IN A ROW OF KICKS|THE WORK BOUND)$")
 NONE = "        KICKS  NONE: FEWER THAN 8 ITEMS"
 DECK = "        ORDER  AS IN THE DECK"
 
