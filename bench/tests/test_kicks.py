@@ -61,9 +61,9 @@ def test_reading_a_trace() -> None:
 
 def test_shorter_windows_read_off_a_trace() -> None:
     tr = _trace()
-    # window 1 (a quarter kick an item: 10 // 4 = 2 kicks): 37 kicks failed
-    # after kick 3: stop at kick 5
-    assert tr.window(1) == pytest.approx((0.010 + 5e-4 + 0.003, 2.0))
+    # window 1 (a quarter kick an item: 10 // 4 = 2 kicks): the first kick
+    # kept, at 3, comes after 2 failed ones: stop at kick 2, still at 5 %
+    assert tr.window(1) == pytest.approx((0.010 + 2e-4 + 0.003, 5.0))
     # window 4 (10 kicks): stop at kick 13
     assert tr.window(4) == pytest.approx((0.010 + 13e-4 + 0.003, 2.0))
     # window 20 (50 kicks): stop 50 kicks after kick 40, at 90
