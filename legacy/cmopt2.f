@@ -82,6 +82,7 @@ C     START POINT (2), AND THEIR LENGTHS ------------------------------
       COMMON /CMTWE/ DENB, KENB, NENB
       SAVE /CMTWE/
 C     ---- LOCAL -------------------------------------------------------
+      LOGICAL LCHAIN
       INTEGER M, IP, J, K, IE, IQ, M2, IA, IB, ISIDE, LIMP, NROUND,
      1        NMOVE, IX2, IY2, IX4, IY4, IE4, IX3, IY3
       DOUBLE PRECISION D1, DQ, GAIN, DIST
@@ -95,6 +96,9 @@ C     IS DRAWN NOW (CMEND'S RULE)
       KIN(MM) = 2 * MM - 1 + IORI(MM)
       KOUT(MM) = 2 * MM - IORI(MM)
 C
+C     THE CHAIN (CMLK3): FROM A NEW TOUR, IN A PACKAGE OF AT MOST 20000
+C     ITEMS
+      LCHAIN = IMODE .EQ. 0 .AND. NJOB .LE. 20000
       NROUND = 0
       IF (IMODE .GE. 1) THEN
          NROUND = 2
@@ -118,7 +122,7 @@ C     ---- TAKE THE NEXT ITEM ------------------------------------------
          IF (IMODE .GE. 1) RETURN
          IF ((NMOVE .EQ. 0 .AND. NROUND .GT. 1) .OR. NROUND .GE. 10)
      1      RETURN
-         IF (NROUND .GE. 2 .AND. NJOB .LE. 20000) RETURN
+         IF (NROUND .GE. 2 .AND. LCHAIN) RETURN
          GOTO 5
       END IF
       M = KQUE(KQHD)
@@ -300,7 +304,7 @@ C     NEW TOUR, A RUN OF ANY LENGTH (CMOR3) IN A KICK'S REPAIR: EACH
 C     MAKES THE ROUNDS OR THE REPAIR TWO TO FIVE TIMES AS DEAR, WHICH
 C     THE 100000-PAD BOARDS' TIME CANNOT TAKE
       IF (NROUND .GT. 1 .AND. LIMP .EQ. 0 .AND. NJOB .LE. 20000) THEN
-         IF (IMODE .EQ. 0) THEN
+         IF (LCHAIN) THEN
             CALL CMLK3(M, LIMP)
          ELSE
             CALL CMOR3(M, LIMP)
