@@ -21,6 +21,9 @@
  * Each function returns 0 or an errno value; base_files.f90 turns that into
  * a message with strerror.
  */
+#if defined(__linux__)
+#define _GNU_SOURCE                 /* sync_file_range (em_write_back) */
+#endif
 #define _POSIX_C_SOURCE 200809L
 #include <errno.h>
 #include <signal.h>
@@ -144,6 +147,21 @@ int em_write(int fd, const char *data, size_t n)
 {
     signal(SIGXFSZ, SIG_IGN);
     return write_all(fd, data, n);
+}
+
+/* Start writing out what fd holds, without waiting: several staged files
+ * whose writes have all been started are then fsynced one after the other
+ * at the cost of about one journal commit rather than one each (measured on
+ * ext4: 8 small files 1.7 ms against 3.0 ms, fsynced as they were written).
+ * Only a hint: where the system has no such call, nothing is done, and the
+ * fsync of em_close_out is what makes the file durable either way. */
+void em_write_back(int fd)
+{
+#if defined(SYNC_FILE_RANGE_WRITE)
+    (void)sync_file_range(fd, 0, 0, SYNC_FILE_RANGE_WRITE);
+#else
+    (void)fd;
+#endif
 }
 
 /* End a streamed file of `total` bytes: for a staged file (tmp not empty)

@@ -14,10 +14,11 @@
 !> file, a pipe, a FIFO, standard input), so every way in reads the same cards.
 module monitor_devices
     use, intrinsic :: iso_fortran_env, only: error_unit, output_unit, int64
+    use, intrinsic :: iso_c_binding, only: c_long_long
     use base_error, only: no_memory
     use base_os, only: make_dirs, is_dir, read_fd
-    use base_files, only: stage_file, commit_file, sync_dir_of, discard_file, lock_dir, &
-                          unlock_dir, same_file
+    use base_files, only: open_out, write_out, write_back, close_out, commit_file, &
+                          sync_dir_of, discard_file, lock_dir, unlock_dir, same_file
     use base_io, only: say
     use base_sha256, only: sha256_hex
     implicit none
@@ -229,17 +230,19 @@ contains
     !> when keep is true. The job sheet comes last and records the size and the
     !> SHA-256 of every other file of the package, so that a tool can tell a
     !> package whose files do not belong together. Every file is first staged
-    !> (base_files: a fresh temporary file, written in full and fsynced); only
-    !> when all are staged, and none of the final names is a directory or the
-    !> deck itself, are they renamed into place, under the output directory's
+    !> (base_files: a fresh temporary file, written in full; the writes of all
+    !> of them started before the first is fsynced, so that their fsyncs cost
+    !> about one); only when all are staged and fsynced, and none of the final
+    !> names is a directory or the deck itself, are they renamed into place, under the output directory's
     !> lock, so that two runs into one directory never mix their files. When
     !> anything fails, no file of the package is changed, and the console says so.
     subroutine dev_close(keep)
         logical, intent(in) :: keep
-        character(len=:), allocatable :: base, msg
+        character(len=:), allocatable :: base, msg, why
         type(byte_buffer) :: sheet
         character(len=4096) :: final(8), staged(8)
-        integer :: nfiles, i, j, lockfd
+        integer :: nfiles, i, j, lockfd, fds(8)
+        integer(c_long_long) :: sizes(8)
         logical :: ok
         base = out_dir // '/' // pkg_name
         nfiles = 0
@@ -266,6 +269,7 @@ contains
             end if
         end do
         staged = ''
+        fds = -1
         if (ok) then
             call stage(1, listing)
             if (keep) then
@@ -289,6 +293,17 @@ contains
                 call stage(8, sheet)
             end if
         end if
+        ! every staged file fsynced and its size checked (after a failure
+        ! only closed, to be removed below)
+        do i = 1, nfiles
+            if (fds(i) < 0) cycle
+            call close_out(fds(i), trim(staged(i)), sizes(i), why)
+            fds(i) = -1
+            if (len(why) > 0 .and. ok) then
+                call say('tenzor: cannot write ' // trim(final(i)) // ': ' // why)
+                ok = .false.
+            end if
+        end do
         if (.not. ok) then
             do i = 1, nfiles
                 call discard_file(trim(staged(i)))
@@ -340,17 +355,26 @@ contains
             final(nfiles) = path
         end subroutine add
 
+        !> File k written in full to a fresh temporary file, left open (fds)
+        !> for the fsync that follows the last.
         subroutine stage(k, buf)
             integer, intent(in) :: k
             type(byte_buffer), intent(in) :: buf
             character(len=:), allocatable :: tmp, why
+            integer :: fd
             if (.not. ok) return
-            call stage_file(trim(final(k)), bytes_of(buf), tmp, why)
+            call open_out(trim(final(k)), fd, tmp, why)
+            if (len(why) == 0) then
+                staged(k) = tmp
+                fds(k) = fd
+                sizes(k) = int(buf%n, c_long_long)
+                if (buf%n > 0) call write_out(fd, buf%data(1:buf%n), why)
+            end if
             if (len(why) > 0) then
                 call say('tenzor: cannot write ' // trim(final(k)) // ': ' // why)
                 ok = .false.
             else
-                staged(k) = tmp
+                call write_back(fd)
             end if
         end subroutine stage
     end subroutine dev_close
