@@ -230,7 +230,7 @@ contains
 
     !> Start writing out a file of open_out without waiting (a hint; close_out
     !> fsyncs it): files whose writes are all started before the first of them
-    !> is closed are fsynced together at the cost of about one.
+    !> is closed are then fsynced in about half the time.
     subroutine write_back(fd)
         integer, intent(in) :: fd
         call c_write_back(int(fd, c_int))
