@@ -25,7 +25,9 @@ program test_em703_tools
     use em703_split, only: split_move, split_equal
     use em703_iso, only: iso_program, iso_check, geometric_code, signed_digits, g_group, m_group
     use base_sha256, only: sha256_hex
-    use base_files, only: write_whole, same_file
+    use base_files, only: write_whole, same_file, open_out, write_out, write_back, &
+                          close_out, commit_file, discard_file
+    use, intrinsic :: iso_c_binding, only: c_long_long
     implicit none
 
     call test_decode_report_example3()
@@ -52,6 +54,7 @@ program test_em703_tools
     call test_text_helpers()
     call test_sha256()
     call test_whole_files()
+    call test_staged_files()
     if (summary() /= 0) stop 1, quiet=.true.
 
 contains
@@ -846,5 +849,47 @@ contains
         call check(same_file('fpm.toml', './fpm.toml'), 'same_file: two spellings')
         call check(.not. same_file('fpm.toml', 'README.md'), 'same_file: two files')
     end subroutine test_whole_files
+
+    !> A package's way of writing (TENZOR's dev_close): two files written to
+    !> temporary names, their write-out started, then each fsynced and its
+    !> size checked, then renamed; a file whose size on disk is not the size
+    !> written is refused and its temporary file removed; a device target is
+    !> written straight into.
+    subroutine test_staged_files()
+        character(len=:), allocatable :: tmp1, tmp2, tmp3, msg
+        character(len=16) :: got
+        integer :: fd1, fd2, fd3, u, ios
+        logical :: there
+        call open_out('test_stage_a.tmpfile', fd1, tmp1, msg)
+        call check(len(msg) == 0 .and. len(tmp1) > 0, 'open_out: a temporary file')
+        call open_out('test_stage_b.tmpfile', fd2, tmp2, msg)
+        call write_out(fd1, 'alpha', msg)
+        call write_out(fd2, 'beta!', msg)
+        call write_back(fd1)
+        call write_back(fd2)
+        inquire(file='test_stage_a.tmpfile', exist=there)
+        call check(.not. there, 'nothing at the final name before the rename')
+        call close_out(fd1, tmp1, 5_c_long_long, msg)
+        call check(len(msg) == 0, 'close_out: fsynced, 5 bytes on disk')
+        call close_out(fd2, tmp2, 9_c_long_long, msg)
+        call check(len(msg) > 0, 'close_out: 5 bytes on disk where 9 were meant is refused')
+        inquire(file=tmp2, exist=there)
+        call check(.not. there, 'the refused temporary file is removed')
+        call commit_file(tmp1, 'test_stage_a.tmpfile', msg)
+        call check(len(msg) == 0, 'commit_file renames the staged file')
+        open(newunit=u, file='test_stage_a.tmpfile', access='stream', form='unformatted', &
+             action='read', iostat=ios)
+        got = ''
+        read(u, iostat=ios) got(1:5)
+        close(u, status='delete')
+        call check_str(got, 'alpha', 'the renamed file holds its bytes')
+        call open_out('/dev/null', fd3, tmp3, msg)
+        call check(len(msg) == 0 .and. len(tmp3) == 0, 'a device is written straight into')
+        call write_out(fd3, 'x', msg)
+        call write_back(fd3)
+        call close_out(fd3, tmp3, 1_c_long_long, msg)
+        call check(len(msg) == 0, 'write_back and close_out on a device')
+        call discard_file(tmp3)
+    end subroutine test_staged_files
 
 end program test_em703_tools
