@@ -832,18 +832,12 @@ contains
     !> directory fails with the reason and leaves nothing.
     subroutine test_whole_files()
         character(len=:), allocatable :: msg
-        character(len=16) :: got
-        integer :: u, ios
         call write_whole('test_whole.tmpfile', 'first version', msg)
         call check(len(msg) == 0, 'write_whole writes a file')
         call write_whole('test_whole.tmpfile', 'second', msg)
         call check(len(msg) == 0, 'write_whole replaces a file')
-        open(newunit=u, file='test_whole.tmpfile', access='stream', form='unformatted', &
-             action='read', iostat=ios)
-        got = ''
-        read(u, iostat=ios) got(1:6)
-        close(u, status='delete')
-        call check_str(got, 'second', 'the file holds the new bytes only')
+        call check_str(taken_back('test_whole.tmpfile', 6), 'second', &
+                       'the file holds the new bytes only')
         call write_whole('no/such/dir/file.txt', 'x', msg)
         call check(index(msg, 'No such file') > 0, 'a missing directory: ' // msg)
         call check(same_file('fpm.toml', './fpm.toml'), 'same_file: two spellings')
@@ -857,8 +851,7 @@ contains
     !> written straight into.
     subroutine test_staged_files()
         character(len=:), allocatable :: tmp1, tmp2, tmp3, msg
-        character(len=16) :: got
-        integer :: fd1, fd2, fd3, u, ios
+        integer :: fd1, fd2, fd3
         logical :: there
         call open_out('test_stage_a.tmpfile', fd1, tmp1, msg)
         call check(len(msg) == 0 .and. len(tmp1) > 0, 'open_out: a temporary file')
@@ -877,12 +870,8 @@ contains
         call check(.not. there, 'the refused temporary file is removed')
         call commit_file(tmp1, 'test_stage_a.tmpfile', msg)
         call check(len(msg) == 0, 'commit_file renames the staged file')
-        open(newunit=u, file='test_stage_a.tmpfile', access='stream', form='unformatted', &
-             action='read', iostat=ios)
-        got = ''
-        read(u, iostat=ios) got(1:5)
-        close(u, status='delete')
-        call check_str(got, 'alpha', 'the renamed file holds its bytes')
+        call check_str(taken_back('test_stage_a.tmpfile', 5), 'alpha', &
+                       'the renamed file holds its bytes')
         call open_out('/dev/null', fd3, tmp3, msg)
         call check(len(msg) == 0 .and. len(tmp3) == 0, 'a device is written straight into')
         call write_out(fd3, 'x', msg)
@@ -891,5 +880,20 @@ contains
         call check(len(msg) == 0, 'write_back and close_out on a device')
         call discard_file(tmp3)
     end subroutine test_staged_files
+
+    !> The first n bytes of file path (blank where it is shorter); the file
+    !> is removed.
+    function taken_back(path, n) result(got)
+        character(len=*), intent(in) :: path
+        integer, intent(in) :: n
+        character(len=n) :: got
+        integer :: u, ios
+        got = ''
+        open(newunit=u, file=path, access='stream', form='unformatted', action='read', &
+             iostat=ios)
+        if (ios /= 0) return
+        read(u, iostat=ios) got
+        close(u, status='delete')
+    end function taken_back
 
 end program test_em703_tools
