@@ -89,47 +89,20 @@ static int write_all(int fd, const char *data, size_t n)
     return 0;
 }
 
-/* Write n bytes to a fresh temporary file beside path (its name to tmp) and
- * fsync it. On failure the temporary file is removed. */
-int em_stage(const char *path, const char *data, size_t n, char *tmp, size_t cap)
-{
-    int fd, rc;
-    struct stat st;
-    /* a file past the size limit (ulimit -f) is an error of write(2), EFBIG,
-     * like a full disk, not the signal that would end the program (and that
-     * the Fortran run-time library turns into a backtrace) */
-    signal(SIGXFSZ, SIG_IGN);
-    if (cap > 0) tmp[0] = '\0';
-    if (stat(path, &st) == 0 && !S_ISREG(st.st_mode)) {
-        if (S_ISDIR(st.st_mode)) return EISDIR;
-        fd = open(path, O_WRONLY | O_CLOEXEC);
-        if (fd < 0) return errno;
-        rc = write_all(fd, data, n);
-        if (close(fd) != 0 && rc == 0) rc = errno;
-        return rc;
-    }
-    fd = create_temp(path, tmp, cap);
-    if (fd < 0) return errno;
-    rc = write_all(fd, data, n);
-    if (rc == 0 && fsync(fd) != 0) rc = errno;
-    /* the bytes on disk, counted again: a short file is never renamed */
-    if (rc == 0 && (fstat(fd, &st) != 0 || (size_t)st.st_size != n)) rc = EIO;
-    if (close(fd) != 0 && rc == 0) rc = errno;
-    if (rc != 0) unlink(tmp);
-    return rc;
-}
-
 /*
- * Streamed output: the same promise as em_stage, for a file written a piece
- * at a time (em703's listings and drawings of big tapes, which are never
- * held whole in memory). em_open_out creates the temporary file (or opens a
- * device or FIFO target straight), em_write appends, em_close_out checks the
- * count, fsyncs and closes; em_commit then renames it into place, and
- * em_discard removes it after a failure.
+ * Output, whole or a piece at a time (em703's listings and drawings of big
+ * tapes are never held whole in memory): em_open_out creates the temporary
+ * file (or opens a device or FIFO target straight), em_write appends,
+ * em_write_back starts its write-out, em_close_out checks the count, fsyncs
+ * and closes; em_commit then renames it into place, and em_discard removes
+ * it after a failure.
  */
 int em_open_out(const char *path, int *fd, char *tmp, size_t cap)
 {
     struct stat st;
+    /* a file past the size limit (ulimit -f) is an error of write(2), EFBIG,
+     * like a full disk, not the signal that would end the program (and that
+     * the Fortran run-time library turns into a backtrace) */
     signal(SIGXFSZ, SIG_IGN);
     *fd = -1;
     if (cap > 0) tmp[0] = '\0';

@@ -11,18 +11,11 @@ module base_files
     use, intrinsic :: iso_c_binding, only: c_int, c_char, c_null_char, c_size_t, c_long_long
     implicit none
     private
-    public :: write_whole, stage_file, commit_file, sync_dir_of, discard_file
+    public :: write_whole, commit_file, sync_dir_of, discard_file
     public :: lock_dir, unlock_dir, same_file, read_whole
     public :: open_out, write_out, write_back, close_out
 
     interface
-        function c_stage(path, data, n, tmp, cap) bind(c, name='em_stage') result(rc)
-            import :: c_int, c_char, c_size_t
-            character(kind=c_char), intent(in) :: path(*), data(*)
-            integer(c_size_t), value :: n, cap
-            character(kind=c_char), intent(out) :: tmp(*)
-            integer(c_int) :: rc
-        end function c_stage
         function c_commit(tmp, path, sync_dir) bind(c, name='em_commit') result(rc)
             import :: c_int, c_char
             character(kind=c_char), intent(in) :: tmp(*), path(*)
@@ -178,27 +171,19 @@ contains
     subroutine write_whole(path, data, msg)
         character(len=*), intent(in) :: path, data
         character(len=:), allocatable, intent(out) :: msg
-        character(len=:), allocatable :: tmp
-        call stage_file(path, data, tmp, msg)
-        if (len(msg) == 0) call commit_file(tmp, path, msg)
-    end subroutine write_whole
-
-    !> Write data to a new temporary file beside path, fsynced; tmp is its name.
-    subroutine stage_file(path, data, tmp, msg)
-        character(len=*), intent(in) :: path, data
-        character(len=:), allocatable, intent(out) :: tmp, msg
-        character(len=path_cap) :: buf
-        integer(c_int) :: rc
-        buf = ''
-        if (len(data) > 0) then
-            rc = c_stage(path // c_null_char, data, int(len(data), c_size_t), buf, &
-                         int(path_cap, c_size_t))
+        character(len=:), allocatable :: tmp, why
+        integer :: fd
+        call open_out(path, fd, tmp, msg)
+        if (len(msg) > 0) return
+        call write_out(fd, data, msg)
+        call close_out(fd, tmp, int(len(data), c_long_long), why)
+        if (len(msg) == 0) msg = why
+        if (len(msg) == 0) then
+            call commit_file(tmp, path, msg)
         else
-            rc = c_stage(path // c_null_char, ' ', 0_c_size_t, buf, int(path_cap, c_size_t))
+            call discard_file(tmp)
         end if
-        tmp = c_string(buf)
-        msg = os_message(rc)
-    end subroutine stage_file
+    end subroutine write_whole
 
     !> Open a file to be written a piece at a time (write_out), whole or not
     !> at all: a fresh temporary file beside path (tmp, its name) or, for a
