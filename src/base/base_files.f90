@@ -176,13 +176,12 @@ contains
         call open_out(path, fd, tmp, msg)
         if (len(msg) > 0) return
         call write_out(fd, data, msg)
-        call close_out(fd, tmp, int(len(data), c_long_long), why)
-        if (len(msg) == 0) msg = why
-        if (len(msg) == 0) then
-            call commit_file(tmp, path, msg)
-        else
-            call discard_file(tmp)
+        if (len(msg) > 0) then
+            call close_out(fd, tmp, -1_c_long_long, why)      ! abandoned: removed
+            return
         end if
+        call close_out(fd, tmp, int(len(data), c_long_long), msg)
+        if (len(msg) == 0) call commit_file(tmp, path, msg)
     end subroutine write_whole
 
     !> Open a file to be written a piece at a time (write_out), whole or not
