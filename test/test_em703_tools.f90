@@ -829,7 +829,7 @@ contains
     end subroutine test_sha256
 
     !> write_whole: the file is replaced whole; a target in a missing
-    !> directory fails with the reason and leaves nothing.
+    !> directory, or a write that fails (/dev/full), fails with the reason.
     subroutine test_whole_files()
         character(len=:), allocatable :: msg
         call write_whole('test_whole.tmpfile', 'first version', msg)
@@ -840,6 +840,8 @@ contains
                        'the file holds the new bytes only')
         call write_whole('no/such/dir/file.txt', 'x', msg)
         call check(index(msg, 'No such file') > 0, 'a missing directory: ' // msg)
+        call write_whole('/dev/full', 'x', msg)
+        call check(index(msg, 'No space') > 0, 'a write that fails is said: ' // msg)
         call check(same_file('fpm.toml', './fpm.toml'), 'same_file: two spellings')
         call check(.not. same_file('fpm.toml', 'README.md'), 'same_file: two files')
     end subroutine test_whole_files
