@@ -31,6 +31,8 @@ C     M       (INPUT)  INTEGER  THE ITEM WHOSE TWO ENDS ARE TRIED AS T1
 C     LIMP    (OUTPUT) INTEGER  1 IF THE TOUR WAS CHANGED, ELSE 0
 C     THE LENGTH TAKEN OFF IS ADDED TO DGAIN; EACH T3 AND T5 LOOKED AT
 C     ADDS 1 TO THE WORK KWORK, EACH ITEM A REVERSAL MOVES 1 (CMTREV).
+C     T1-T2, T3-T4 AND T5-T6 ARE MOVES OF THE TOUR: THEIR LENGTHS ARE
+C     READ FROM DMV (CMDMV), THE SAME TO THE LAST BIT AS THEIR ROOTS.
 C     CHANGES: SEE THE HISTORY OF THE REPOSITORY (GIT LOG)
 C=======================================================================
       SUBROUTINE CMLK3(M, LIMP)
@@ -80,6 +82,16 @@ C     MOVE (ITS NUMBER ICHN) -------------------------------------------
       INTEGER ICHN, KADD(MXPT + 2)
       COMMON /CMTWL/ ICHN, KADD
       SAVE /CMTWL/
+C     ---- /CMTWM/ THE LENGTH OF EACH END'S MOVE (CMDMV), AND THE OLD
+C     LENGTHS A KICK HAS CHANGED: NDJ PAIRS, THE END KDJE(J) AND THE
+C     LENGTH DDJV(J) IT HAD (TWO PAIRS A MOVE, AT MOST TWO MOVES A
+C     REVERSAL, AT MOST MXJRN REVERSALS A KICK) -----------------------
+      INTEGER MXDJ
+      PARAMETER (MXDJ = 4 * MXJRN + 16)
+      INTEGER NDJ, KDJE(MXDJ)
+      DOUBLE PRECISION DMV(MXPT + 2), DDJV(MXDJ)
+      COMMON /CMTWM/ DMV, DDJV, NDJ, KDJE
+      SAVE /CMTWM/
 C     ---- LOCAL -------------------------------------------------------
       INTEGER MXDEP, MXREV, MXC
       PARAMETER (MXDEP = 50, MXREV = 3 * MXDEP, MXC = 8)
@@ -87,7 +99,7 @@ C     ---- LOCAL -------------------------------------------------------
      1        ISIDE, NP2, NCY, NDEP, IDR, NEV, IT1, IT2, IT3, IT4, IT5,
      2        IT6, IP1, IP2, IP3, IP4, IP5, IP6, IB1, IB3, IB5, IR3P,
      3        IR4P, IR5P, IR6P, K3, K5, IR, NR3, NR5, M3, M5, MM2, IQ3,
-     4        IQ5, IX1, IY1, IX2, IY2, IX3, IY3, IX4, IY4, IX6, IY6,
+     4        IQ5, IX1, IY1, IX4, IY4, IX6, IY6,
      5        ITYP, IBA, IBB, IBC, JB3, JB4, JB5, JB6, JTYP, JBA, JBB,
      6        JBC, L, I
       LOGICAL L2OPT
@@ -123,8 +135,7 @@ C     T2 IS ACROSS THE MOVE: PLACES 2B AND 2B+1 ARE ONE MOVE'S ENDS
       IT2 = CMLED(IP2)
       IX1 = KQX(IT1)
       IY1 = KQY(IT1)
-      CALL CMLXY(IT2, IX2, IY2)
-      G0 = DIST(IX1, IY1, IX2, IY2)
+      G0 = DMV(IT1)
       NDEP = 0
 C     ---- ONE STEP: THE BEST T3..T6 FOR T1, T2 AND THE GAIN G0 --------
   100 CONTINUE
@@ -168,10 +179,8 @@ C        2P (CMLPS WRITTEN OUT)
          IR4P = (IP4 - IP1) * IDR
          IF (IR4P .LT. 0) IR4P = IR4P + NCY
          IT4 = CMLED(IP4)
-         IX3 = KQX(IT3)
-         IY3 = KQY(IT3)
          CALL CMLXY(IT4, IX4, IY4)
-         G2 = G1 + DIST(IX3, IY3, IX4, IY4)
+         G2 = G1 + DMV(IT3)
 C        ---- T4 JUST BEFORE T3: THE 2-OPT MOVE THAT PUTS IN T4-T1 -----
          L2OPT = IR4P .EQ. IR3P - 1
          IF (L2OPT) THEN
@@ -246,7 +255,7 @@ C           T6 (CMLED AND CMLXY WRITTEN OUT: THE INNERMOST LOOP)
                IX6 = KQX(IT6)
                IY6 = KQY(IT6)
             END IF
-            G4 = G3 + DIST(KQX(IT5), KQY(IT5), IX6, IY6)
+            G4 = G3 + DMV(IT5)
 C           THE STEP CLOSES SHORTER IF T6-T1 IS SHORTER THAN G4: THE
 C           SQUARES FIRST, THE ROOT ONLY THEN
             GAIN = 0.0D0
@@ -316,7 +325,6 @@ C     THE SIX ENDS' MOVES ARE NOW TOUCHED BY THIS CHAIN
       G0 = BESTG
       IP1 = CMLPS(IT1)
       IP2 = CMLPS(IT2)
-      CALL CMLXY(IT2, IX2, IY2)
       GOTO 100
 C     ---- A SHORTER TOUR: QUEUE THE ITEMS WHOSE MOVES CHANGED (T1'S
 C     ITEM M IS LOOKED AT AGAIN BY CMOPT2) -----------------------------

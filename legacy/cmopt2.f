@@ -81,10 +81,20 @@ C     START POINT (2), AND THEIR LENGTHS ------------------------------
       DOUBLE PRECISION DENB(MXNB, 2)
       COMMON /CMTWE/ DENB, KENB, NENB
       SAVE /CMTWE/
+C     ---- /CMTWM/ THE LENGTH OF EACH END'S MOVE (CMDMV), AND THE OLD
+C     LENGTHS A KICK HAS CHANGED: NDJ PAIRS, THE END KDJE(J) AND THE
+C     LENGTH DDJV(J) IT HAD (TWO PAIRS A MOVE, AT MOST TWO MOVES A
+C     REVERSAL, AT MOST MXJRN REVERSALS A KICK) -----------------------
+      INTEGER MXDJ
+      PARAMETER (MXDJ = 4 * MXJRN + 16)
+      INTEGER NDJ, KDJE(MXDJ)
+      DOUBLE PRECISION DMV(MXPT + 2), DDJV(MXDJ)
+      COMMON /CMTWM/ DMV, DDJV, NDJ, KDJE
+      SAVE /CMTWM/
 C     ---- LOCAL -------------------------------------------------------
       LOGICAL LCHAIN
-      INTEGER M, IP, J, K, IE, IQ, M2, IA, IB, ISIDE, LIMP, NROUND,
-     1        NMOVE, IX2, IY2, IX4, IY4, IE4, IX3, IY3
+      INTEGER M, IP, J, K, IE, IQ, IQ4, M2, IA, IB, ISIDE, LIMP,
+     1        NROUND, NMOVE, IX2, IY2, IX4, IY4, IE4, IX3, IY3
       DOUBLE PRECISION D1, DQ, GAIN, DIST
       INTEGER JX1, JY1, JX2, JY2
       INTEGER KIN, KOUT, MM
@@ -159,7 +169,8 @@ C           THE MOVE INTO M: EXIT(IP-1) TO ENTRY(IP)
                IY2 = KDSY
             END IF
          END IF
-         D1 = DIST(KQX(IE), KQY(IE), IX2, IY2)
+C        ITS LENGTH, AS OF EVERY MOVE TAKEN OUT, FROM DMV (CMDMV)
+         D1 = DMV(IE)
          DO 50 K = 1, MXNB
             IQ = KNB(K, IE)
             IF (IQ .EQ. 0) GOTO 60
@@ -183,7 +194,8 @@ C           (AN ITEM WHOSE ENDS ARE ONE POINT HAS BOTH KINDS THERE)
             END IF
             IF (IA .EQ. IB) GOTO 50
 C           OUT: THE MOVES IE-(IX2,IY2) AND IQ-(IX4,IY4), THE END
-C           BESIDE IQ; IN: THE MOVES IE-IQ AND (IX2,IY2)-(IX4,IY4)
+C           BESIDE IQ (THE MOVE OF IQ4, THE END OF M2 ON THAT SIDE);
+C           IN: THE MOVES IE-IQ AND (IX2,IY2)-(IX4,IY4)
             IF (ISIDE .EQ. 1) THEN
                IF (J .LT. NITM) THEN
                   IE4 = KIN(ITOUR(J + 1))
@@ -203,7 +215,12 @@ C           BESIDE IQ; IN: THE MOVES IE-IQ AND (IX2,IY2)-(IX4,IY4)
                   IY4 = KDSY
                END IF
             END IF
-            GAIN = D1 + DIST(KQX(IQ), KQY(IQ), IX4, IY4)
+            IF (ISIDE .EQ. 1) THEN
+               IQ4 = KOUT(M2)
+            ELSE
+               IQ4 = KIN(M2)
+            END IF
+            GAIN = D1 + DMV(IQ4)
      1           - DQ - DIST(IX2, IY2, IX4, IY4)
             IF (GAIN .LE. 1.0D-6) GOTO 50
 C           ---- TAKE THE MOVE; LOOK AGAIN AT THE FOUR ITEMS CONCERNED -
@@ -226,7 +243,7 @@ C     AND AN ITEM WHOSE EXIT IS NEAR IT, REVERSING 1..J.
       IP = IPOS(M)
       IF (IP .EQ. NITM) THEN
          IE = KOUT(M)
-         D1 = DIST(KQX(IE), KQY(IE), KDTX, KDTY)
+         D1 = DMV(IE)
          DO 70 K = 1, NENB(2)
             IQ = KENB(K, 2)
             DQ = DENB(K, 2)
@@ -246,7 +263,7 @@ C     AND AN ITEM WHOSE EXIT IS NEAR IT, REVERSING 1..J.
                IX3 = KDSX
                IY3 = KDSY
             END IF
-            GAIN = D1 + DIST(IX3, IY3, KQX(IQ), KQY(IQ))
+            GAIN = D1 + DMV(KIN(M2))
      1           - DQ - DIST(IX3, IY3, KQX(IE), KQY(IE))
             IF (GAIN .LE. 1.0D-6) GOTO 70
             CALL CMTREV(J, NITM)
@@ -262,7 +279,7 @@ C     AND AN ITEM WHOSE EXIT IS NEAR IT, REVERSING 1..J.
    80 CONTINUE
       IF (IP .EQ. 1) THEN
          IE = KIN(M)
-         D1 = DIST(KDSX, KDSY, KQX(IE), KQY(IE))
+         D1 = DMV(IE)
          DO 90 K = 1, NENB(1)
             IQ = KENB(K, 1)
             DQ = DENB(K, 1)
@@ -282,7 +299,7 @@ C     AND AN ITEM WHOSE EXIT IS NEAR IT, REVERSING 1..J.
                IX3 = KDTX
                IY3 = KDTY
             END IF
-            GAIN = D1 + DIST(KQX(IQ), KQY(IQ), IX3, IY3)
+            GAIN = D1 + DMV(KOUT(M2))
      1           - DQ - DIST(KQX(IE), KQY(IE), IX3, IY3)
             IF (GAIN .LE. 1.0D-6) GOTO 90
             CALL CMTREV(1, J)

@@ -57,10 +57,20 @@ C     THE LENGTH THE MOVES SINCE THE KICK HAVE TAKEN OFF THE TOUR ------
       DOUBLE PRECISION DGAIN
       COMMON /CMTWJ/ DGAIN, NJRN, LJRN, KJWK, KJLO, KJHI, KJIT, KJOR
       SAVE /CMTWJ/
+C     ---- /CMTWM/ THE LENGTH OF EACH END'S MOVE (CMDMV), AND THE OLD
+C     LENGTHS A KICK HAS CHANGED: NDJ PAIRS, THE END KDJE(J) AND THE
+C     LENGTH DDJV(J) IT HAD (TWO PAIRS A MOVE, AT MOST TWO MOVES A
+C     REVERSAL, AT MOST MXJRN REVERSALS A KICK) -----------------------
+      INTEGER MXDJ
+      PARAMETER (MXDJ = 4 * MXJRN + 16)
+      INTEGER NDJ, KDJE(MXDJ)
+      DOUBLE PRECISION DMV(MXPT + 2), DDJV(MXDJ)
+      COMMON /CMTWM/ DMV, DDJV, NDJ, KDJE
+      SAVE /CMTWM/
 C     ---- LOCAL -------------------------------------------------------
       INTEGER I, J, J2, L, IC, IREV, NB, NB5, IBC, IBS, IBE, IBREV,
-     1        IQ, M2, IDIR, IE2, IE4, IE5, IQ4, M5, IXP, IYP, IXC, IYC,
-     2        IXD, IYD, IXN, IYN, IROLE, MS(6)
+     1        IQ, M2, IDIR, IE2, IE4, IE5, IES, IQ4, M5, IXP, IYP, IXN,
+     2        IYN, IROLE, MS(6)
       LOGICAL LEXIT, LONE
       DOUBLE PRECISION DPS, G1, G2, GAIN, BEST, DCD, DIST
       INTEGER JX1, JY1, JX2, JY2
@@ -105,7 +115,8 @@ C     BY, T1 THE END AFTER IT)
             IYP = KDTY
          END IF
       END IF
-      DPS = DIST(IXP, IYP, KQX(IE2), KQY(IE2))
+C     THE MOVE INTO S, AS ALL MOVES TAKEN OUT HERE, FROM DMV (CMDMV)
+      DPS = DMV(IE2)
 C     ---- T3: A NEAR END OF T2, NEARER THAN T1 ------------------------
       DO 40 NB = 1, MXNB
          IQ = KNB(NB, IE2)
@@ -132,23 +143,8 @@ C        WHOSE ENDS ARE ONE POINT IS TRIED IN BOTH ROLES.
          IREV = 0
          IF ((IDIR .EQ. 1) .NEQV. LEXIT) IREV = 1
          IF (IC .GE. I - 1 .AND. IC .LE. I) GOTO 38
-C        C AND D, THE ENDS AT PLACES C AND C+1; T4 THE ONE NOT T3
-         IF (IC .GE. 1) THEN
-            IE4 = KOUT(ITOUR(IC))
-            IXC = KQX(IE4)
-            IYC = KQY(IE4)
-         ELSE
-            IXC = KDSX
-            IYC = KDSY
-         END IF
-         IF (IC .LT. NITM) THEN
-            IE4 = KIN(ITOUR(IC + 1))
-            IXD = KQX(IE4)
-            IYD = KQY(IE4)
-         ELSE
-            IXD = KDTX
-            IYD = KDTY
-         END IF
+C        C AND D, THE ENDS AT PLACES C AND C+1; T4 THE ONE NOT T3, AND
+C        THE LENGTH OF THEIR MOVE (DMV, CMDMV)
          IF (LEXIT) THEN
             IF (IC .GE. NITM) GOTO 38
             IQ4 = KIN(ITOUR(IC + 1))
@@ -156,7 +152,7 @@ C        C AND D, THE ENDS AT PLACES C AND C+1; T4 THE ONE NOT T3
             IF (IC .LT. 1) GOTO 38
             IQ4 = KOUT(ITOUR(IC))
          END IF
-         DCD = DIST(IXC, IYC, IXD, IYD)
+         DCD = DMV(IQ4)
 C        ---- T5: A NEAR END OF T4, THE OTHER END OF S -----------------
          DO 30 NB5 = 1, MXNB
             IE5 = KNB(NB5, IQ4)
@@ -172,6 +168,9 @@ C           (IDIR 2), AND S MUST NOT HOLD C OR C+1
             ELSE
                IE4 = KIN(M5)
             END IF
+C           (IES: THAT END, WHOSE MOVE IS THE ONE TAKEN OUT AFTER S; AN
+C           ITEM WHOSE ENDS ARE ONE POINT MAY BE OFFERED BY THE OTHER)
+            IES = IE4
             IF (IE5 .NE. IE4) THEN
                IF (KQX(2*M5) .NE. KQX(2*M5-1) .OR.
      1             KQY(2*M5) .NE. KQY(2*M5-1)) GOTO 30
@@ -201,7 +200,7 @@ C              T6, THE END OF THE ITEM BEFORE S, IS JOINED TO T1
                   IYN = KDSY
                END IF
             END IF
-            GAIN = G2 + DIST(KQX(IE5), KQY(IE5), IXN, IYN)
+            GAIN = G2 + DMV(IES)
      1           - DIST(IXP, IYP, IXN, IYN)
             IF (GAIN .GT. BEST) THEN
                BEST = GAIN

@@ -48,6 +48,16 @@ C     THE LENGTH THE MOVES SINCE THE KICK HAVE TAKEN OFF THE TOUR ------
       DOUBLE PRECISION DGAIN
       COMMON /CMTWJ/ DGAIN, NJRN, LJRN, KJWK, KJLO, KJHI, KJIT, KJOR
       SAVE /CMTWJ/
+C     ---- /CMTWM/ THE LENGTH OF EACH END'S MOVE (CMDMV), AND THE OLD
+C     LENGTHS A KICK HAS CHANGED: NDJ PAIRS, THE END KDJE(J) AND THE
+C     LENGTH DDJV(J) IT HAD (TWO PAIRS A MOVE, AT MOST TWO MOVES A
+C     REVERSAL, AT MOST MXJRN REVERSALS A KICK) -----------------------
+      INTEGER MXDJ
+      PARAMETER (MXDJ = 4 * MXJRN + 16)
+      INTEGER NDJ, KDJE(MXDJ)
+      DOUBLE PRECISION DMV(MXPT + 2), DDJV(MXDJ)
+      COMMON /CMTWM/ DMV, DDJV, NDJ, KDJE
+      SAVE /CMTWM/
 C     ---- LOCAL -------------------------------------------------------
       INTEGER I, J2, K, L, IEND, ID, IQ, M2, J, IC, IREV, NB, IBC,
      1        IBREV, IXS, IYS, IXE, IYE, IXP, IYP, IXN, IYN, IXC, IYC,
@@ -81,7 +91,8 @@ C     EVERY ITEM THE REPAIRS LOOK AT)
          IXP = KDSX
          IYP = KDSY
       END IF
-      DPS = DIST(IXP, IYP, IXS, IYS)
+C     (EVERY MOVE TAKEN OUT HERE HAS ITS LENGTH IN DMV, CMDMV)
+      DPS = DMV(KIN(M))
       DO 50 K = 1, 3
          J2 = I + K - 1
          IF (J2 .GT. NITM) RETURN
@@ -97,7 +108,7 @@ C        THE END OF S, AND THE MOVE OUT OF IT
             IXN = KDTX
             IYN = KDTY
          END IF
-         REM = DPS + DIST(IXE, IYE, IXN, IYN)
+         REM = DPS + DMV(KOUT(ITOUR(J2)))
      1       - DIST(IXP, IYP, IXN, IYN)
          IF (REM .LE. 1.0D-6) GOTO 50
          BEST = 1.0D-6
@@ -168,7 +179,11 @@ C              (CMEND'S LOOK-UP WRITTEN OUT: THE INNERMOST LOOP)
                   ADD = DIST(IXC, IYC, IXE, IYE) +
      1                  DIST(IXS, IYS, IXD, IYD)
                END IF
-               ADD = ADD - DIST(IXC, IYC, IXD, IYD)
+               IF (IC .GE. 1) THEN
+                  ADD = ADD - DMV(KOUT(ITOUR(IC)))
+               ELSE
+                  ADD = ADD - DMV(2 * NITM + 1)
+               END IF
                GAIN = REM - ADD
                IF (GAIN .GT. BEST) THEN
                   BEST = GAIN
