@@ -5,6 +5,8 @@
 #                  oracle (harness/), the neighbouring systems (seeds/) and the benchmarks'
 #                  own tests (bench/)
 #   make examples  punch every deck of examples/ into out/ (docs/TOOLS.md's examples)
+#   make release   the build the benchmarks time (fpm's release profile, linked statically
+#                  with link-time optimisation); prints the path of its tenzor
 #   make bench     the benchmarks of docs/PERFORMANCE.md (about 20 minutes; BENCH_ARGS=--quick
 #                  for the 100- and 1 000-pad boards): a table, and out/bench/bench.csv, .svg
 #   make f2c       TENZOR built from legacy/ by f2c, gcc and libf2c: build/f2c/tenzor
@@ -37,7 +39,7 @@ CHECKS := -fcheck=all -ffpe-trap=invalid,zero,overflow -ftrapv
 # The built program is run directly: `fpm run` would add its own progress lines.
 TENZOR = "$$(fpm run --runner echo tenzor 2>/dev/null | tail -n 1)"
 
-.PHONY: demo examples test test-checks test-cpus fuzz mutants bench setup build f2c flang
+.PHONY: release demo examples test test-checks test-cpus fuzz mutants bench setup build f2c flang
 
 setup:
 	@bash scripts/setup.sh
@@ -104,7 +106,16 @@ flang: setup
 	@WITH_FLANG=1 bash scripts/setup.sh
 	@bash scripts/judges.sh flang
 
-# bench builds the release profile of TENZOR itself (fpm build --profile release).
+# The release build: fpm's release profile, linked statically (no dynamic loader at
+# start-up) with link-time optimisation. The same flags as bench/measure.py's
+# RELEASE_FLAGS (bench/tests/test_bench.py holds them together); the tapes are the
+# same as every other build's.
+RELEASE_FLAGS := -flto -static
+release: setup
+	@fpm build --profile release --flag "$(RELEASE_FLAGS)" >/dev/null
+	@fpm run --profile release --flag "$(RELEASE_FLAGS)" --runner echo tenzor 2>/dev/null | tail -n 1
+
+# bench builds the release build of TENZOR itself, as make release does.
 bench:
 	@WITH_BENCH=1 bash scripts/setup.sh
 	python -m bench $(BENCH_ARGS)

@@ -1,7 +1,8 @@
 """``python -m bench [--quick] [--out DIR] ...``: run the benchmarks.
 
-Builds TENZOR with ``fpm build --profile release`` (unless ``--tenzor``
-names a binary), runs every board, prints the table and the targets, and
+Builds TENZOR's release build (``make release``: fpm's release profile
+with :data:`bench.measure.RELEASE_FLAGS`) unless ``--tenzor`` names a
+binary, runs every board, prints the table and the targets, and
 writes ``bench.csv``, ``bench.txt`` (the table and the targets),
 ``bench.md`` (the table in Markdown) and ``bench.svg`` into ``--out``
 (default ``out/bench``; the decks and tapes go to ``--out``/scratch).
@@ -73,7 +74,7 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--verify-min", type=int, default=10000, metavar="N",
                    help="smallest board checked by verify (default 10000)")
     p.add_argument("--tenzor", type=Path, metavar="EXE",
-                   help="the TENZOR binary to time (default: build the release profile)")
+                   help="the TENZOR binary to time (default: build the release build, as make release does)")
     p.add_argument("--tsplib", metavar="NAME,...",
                    help="TSPLIB instances to run (default: all of "
                         + ",".join(tsplib.NAMES) + "; --quick: d198,pcb442)")

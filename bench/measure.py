@@ -45,17 +45,28 @@ def _check(proc: subprocess.Popen, deck: Path) -> None:
         raise RuntimeError(f"tenzor {deck} exited {proc.returncode}: {err.strip()[:500]}")
 
 
-def release_binary(tree: Path) -> Path:
+#: What the release build adds to fpm's release profile (``make release``
+#: passes the same; a test holds the Makefile to it). ``-static``: no
+#: dynamic loader and no shared Fortran run-time library to map and bind at
+#: start-up, about 1 ms of every run; ``-flto``: the routines of legacy/,
+#: one file each, inlined into each other at the link. Neither changes a
+#: result: every tape is the same byte for byte (docs/PERFORMANCE.md).
+RELEASE_FLAGS = "-flto -static"
+
+
+def release_binary(tree: Path, flags: str = RELEASE_FLAGS) -> Path:
     """Build the TENZOR of ``tree`` optimised (``fpm build --profile
-    release``) and return the path of the executable.  SystemExit when fpm
-    is not on PATH; CalledProcessError (its output captured) when the build
-    fails."""
+    release --flag FLAGS``, :data:`RELEASE_FLAGS` unless told otherwise;
+    fpm gives the flags to the compiler and the link, and builds each set
+    in a directory of its own) and return the path of the executable.
+    SystemExit when fpm is not on PATH; CalledProcessError (its output
+    captured) when the build fails."""
     fpm = shutil.which("fpm")
     if fpm is None:
         raise SystemExit("fpm is not on PATH: run `make bench`, or put .venv/bin on PATH")
-    subprocess.run([fpm, "build", "--profile", "release"], cwd=tree, check=True,
-                   capture_output=True)
-    out = subprocess.run([fpm, "run", "--profile", "release", "--runner", "echo", "tenzor"],
+    profile = ["--profile", "release"] + (["--flag", flags] if flags else [])
+    subprocess.run([fpm, "build", *profile], cwd=tree, check=True, capture_output=True)
+    out = subprocess.run([fpm, "run", *profile, "--runner", "echo", "tenzor"],
                          cwd=tree, check=True, capture_output=True, text=True).stdout.split()
     return tree / out[-1]
 

@@ -7,13 +7,15 @@ docs/PERFORMANCE.md, so nothing here asserts a time.
 from __future__ import annotations
 
 import math
+import shutil
+import subprocess
 import xml.etree.ElementTree as ET
 from pathlib import Path
 
 import pytest
 
 from bench import __main__ as bench_main
-from bench import boards, measure, report, tours
+from bench import boards, measure, report, tours, tsplib
 
 ROOT = Path(__file__).resolve().parents[2]
 
@@ -97,6 +99,34 @@ def test_boards_are_deterministic_and_fit_the_field():
         for p in board.pads:
             for x, y in p.centres():
                 assert 0 < x < board.side and 0 < y < board.side
+
+
+def test_make_release_and_the_bench_build_the_same_release():
+    """`make release` and the benchmark's own build pass fpm the same flags."""
+    make = (ROOT / "Makefile").read_text(encoding="utf-8")
+    (line,) = [ln for ln in make.splitlines() if ln.startswith("RELEASE_FLAGS :=")]
+    assert line.split(":=", 1)[1].strip() == measure.RELEASE_FLAGS
+
+
+@pytest.mark.tenzor
+@pytest.mark.skipif(shutil.which("fpm") is None, reason="fpm is not on PATH")
+def test_the_release_build_punches_what_the_test_build_punches(tenzor_exe, tmp_path):
+    """The release build (fpm's release profile, linked statically, link-time
+    optimisation) and the build under test write the same package, byte for
+    byte, for the demo deck and TSPLIB's d198: the timed program is the
+    tested one. The job sheet names no build, so it is compared too."""
+    release = measure.release_binary(ROOT)
+    decks = [ROOT / "examples" / "demo.crd", tmp_path / "d198.crd"]
+    decks[1].write_text(tsplib.load("d198").deck(), encoding="ascii")
+    for exe, out in ((tenzor_exe, "test"), (release, "release")):
+        for deck in decks:
+            subprocess.run([str(exe), str(deck), "-o", str(tmp_path / out)], check=True,
+                           capture_output=True)
+    names = sorted(p.name for p in (tmp_path / "test").iterdir())
+    assert len(names) == 16 and names == sorted(p.name for p in (tmp_path / "release").iterdir())
+    for name in names:
+        assert (tmp_path / "test" / name).read_bytes() == \
+            (tmp_path / "release" / name).read_bytes(), name
 
 
 def test_performance_md_shows_the_recorded_run():
