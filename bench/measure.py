@@ -107,6 +107,10 @@ def time_tenzor(exe: Path, deck: Path, out: Path, repeats: int,
     process; short runs are repeated until they add up to ``budget``
     seconds (at most ``cap`` runs), since the wall time of a run of a few
     milliseconds on a shared machine is mostly the wait for a free core."""
+    # What earlier boards wrote (a 100 000-pad board's tapes, verify's
+    # files) is written out first: the file system's writeback of it must
+    # not land in this board's fsyncs. Outside the timing.
+    os.sync()
     runs = []
     while len(runs) < repeats or (sum(w for w, _ in runs) < budget and len(runs) < cap):
         runs.append(run_once(exe, deck, out))
