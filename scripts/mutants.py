@@ -156,6 +156,10 @@ MUTANTS = [
     Mutant("legacy/cmlk3.f", "PARAMETER (MXDEP = 50, MXREV = 3 * MXDEP, MXC = 8)",
            "PARAMETER (MXDEP = 50, MXREV = 3 * MXDEP, MXC = 7)",
            "the chain tries the 7 nearest ends of t2 and t4, not 8"),
+    Mutant("legacy/cmkick.f", "            DO 32 J = NDJ, 1, -1", "            DO 32 J = NDJ, 2, -1",
+           "a failed kick puts back all but the first move length it changed"),
+    Mutant("legacy/cmtrev.f", "         CALL CMDMV(I2)", "         CALL CMDMV(I1)",
+           "a reversal keeps the length of the move into it, not the one out of it"),
 ]
 
 TESTS = ["python", "-m", "pytest", "-q", "-x", "--tb=no", "-rf", "-p", "no:cacheprovider", "-m",
