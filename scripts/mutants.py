@@ -115,10 +115,16 @@ MUTANTS = [
     Mutant("legacy/cmkick.f", "         IF (DGAIN .LE. 1.0D-6) THEN",
            "         IF (DGAIN .LT. -1.0D-6) THEN",
            "a kick that leaves the tour no shorter is kept"),
-    Mutant("legacy/cmkick.f", "IF (MODE .EQ. 2) NSTAG = MAX(NITM / 4, 1)",
-           "IF (MODE .EQ. 2) NSTAG = MAX(NITM / 2, 1)",
+    Mutant("legacy/cmkick.f", "IF (MODE .EQ. 2) NBASE = MAX(NITM / 4, 1)",
+           "IF (MODE .EQ. 2) NBASE = MAX(NITM / 2, 1)",
            "the kicks of a small tape give up after half a failure an item in a row, "
            "not a quarter"),
+    Mutant("legacy/cmkick.f", "GKEPT / TLEN0 - 0.5D0", "GKEPT / TLEN0 - 1.0D0",
+           "the kicks' window grows only beyond the first per cent they gained, "
+           "not the first half per cent"),
+    Mutant("legacy/cmkick.f", "NSTAG = NBASE + INT(3.0D0 *", "NSTAG = NBASE + INT(2.0D0 *",
+           "the kicks' window grows by half a kick an item for each per cent gained, "
+           "not three quarters"),
     Mutant("legacy/cmorop.f", "      DO 50 K = 1, 3", "      DO 50 K = 1, 2",
            "Or-opt moves runs of one or two items only"),
     Mutant("legacy/cmknn.f", "PARAMETER (MXQ = 2, MXRING = 30, MXQEN = 4000)",

@@ -24,7 +24,7 @@ CMKICK = ROOT / "legacy" / "cmkick.f"
 
 def test_the_trace_fits_cmkick_and_compiles(tmp_path: Path) -> None:
     text = kicks.traced_source(CMKICK.read_text(encoding="ascii"))
-    assert "GETENV('TZTRACE'" in text and "NSTAG = MAX(NWIN * NITM / 4, 1)" in text
+    assert "GETENV('TZTRACE'" in text and "NBASE = MAX(NWIN * NITM / 4, 1)" in text
     src = tmp_path / "cmkick.f"
     src.write_text(text, encoding="ascii")
     gfortran = shutil.which("gfortran")
@@ -37,39 +37,57 @@ def test_the_trace_fits_cmkick_and_compiles(tmp_path: Path) -> None:
 
 def test_a_moved_line_is_named() -> None:
     text = CMKICK.read_text(encoding="ascii").replace(
-        "      IF (MODE .EQ. 2) NSTAG = MAX(NITM / 4, 1)\n",
-        "      IF (MODE .EQ. 2) NSTAG = MAX(NITM / 2, 1)\n")
+        "      IF (MODE .EQ. 2) NBASE = MAX(NITM / 4, 1)\n",
+        "      IF (MODE .EQ. 2) NBASE = MAX(NITM / 2, 1)\n")
     with pytest.raises(kicks.KicksError,
-                       match=r"0 copies of the line 'IF \(MODE \.EQ\. 2\) NSTAG = MAX\(NITM / 4, 1\)'"):
+                       match=r"0 copies of the line 'IF \(MODE \.EQ\. 2\) NBASE = MAX\(NITM / 4, 1\)'"):
         kicks.traced_source(text)
 
 
 def _trace() -> kicks.Trace:
-    # 10 items; kicks kept at 3 and 40; the kicks stopped after 100; the
-    # program's CPU 23 ms, 3 of them after the kicks; 0.1 ms a kick
-    return kicks.Trace(10, [(0, 0.010, 5.0), (3, 0.011, 2.0), (40, 0.015, 0.8),
-                            (100, 0.020, 0.8)], 0.023)
+    # 10 items; kicks kept at 3 and 40, which take off less than half a per
+    # cent of the first tour (the window does not grow); the kicks stopped
+    # after 100; the program's CPU 23 ms, 3 of them after the kicks; 0.1 ms
+    # a kick
+    return kicks.Trace(10, [(0, 0.010, 1.3), (3, 0.011, 1.05), (40, 0.015, 0.9),
+                            (100, 0.020, 0.9)], 0.023)
 
 
 def test_reading_a_trace() -> None:
     tr = _trace()
     assert tr.kicks == 100 and tr.per_kick() == pytest.approx(1e-4)
     assert tr.after() == pytest.approx(0.003)
-    assert tr.at(5) == 5.0 and tr.at(12) == 2.0 and tr.at(400) == 0.8
-    assert tr.kicks_to(1.0) == 40 and tr.kicks_to(2.0) == 3 and tr.kicks_to(0.5) is None
+    assert tr.at(5) == 1.3 and tr.at(12) == 1.05 and tr.at(400) == 0.9
+    assert tr.kicks_to(1.0) == 40 and tr.kicks_to(1.1) == 3 and tr.kicks_to(0.5) is None
 
 
 def test_shorter_windows_read_off_a_trace() -> None:
     tr = _trace()
     # window 1 (a quarter kick an item: 10 // 4 = 2 kicks): the first kick
-    # kept, at 3, comes after 2 failed ones: stop at kick 2, still at 5 %
-    assert tr.window(1) == pytest.approx((0.010 + 2e-4 + 0.003, 5.0))
+    # kept, at 3, comes after 2 failed ones: stop at kick 2, still at 1.3 %
+    assert tr.window(1) == pytest.approx((0.010 + 2e-4 + 0.003, 1.3))
     # window 4 (10 kicks): stop at kick 13
-    assert tr.window(4) == pytest.approx((0.010 + 13e-4 + 0.003, 2.0))
+    assert tr.window(4) == pytest.approx((0.010 + 13e-4 + 0.003, 1.05))
     # window 20 (50 kicks): stop 50 kicks after kick 40, at 90
-    assert tr.window(20) == pytest.approx((0.010 + 90e-4 + 0.003, 0.8))
+    assert tr.window(20) == pytest.approx((0.010 + 90e-4 + 0.003, 0.9))
     # window 40: the run ended first, at kick 100: the whole program
-    assert tr.window(40) == pytest.approx((0.023, 0.8))
+    assert tr.window(40) == pytest.approx((0.023, 0.9))
+
+
+def test_the_window_grows_with_what_the_kicks_gain() -> None:
+    # 100 items, window 4: 100 failed kicks. Kick 5 takes the tour from 3 %
+    # to 2 % over the optimum, 100/103 per cent of the first tour's length:
+    # 0.47 beyond the first half, so the window grows to 100 + 141 and kick
+    # 200 (195 after kick 5) is reached; at 1.5 % the kicks have taken off
+    # 1.456 per cent, and the window is 100 + 286: the stop is at kick 586
+    # (0.01 ms a kick), not at kick 105, as the window alone would put it
+    tr = kicks.Trace(100, [(0, 0.010, 3.0), (5, 0.011, 2.0), (200, 0.015, 1.5),
+                           (1000, 0.020, 1.5)], 0.023)
+    assert tr.window(4) == pytest.approx((0.010 + 586e-5 + 0.003, 1.5))
+    # a small gain leaves the window as it is: stop 100 after kick 5
+    small = kicks.Trace(100, [(0, 0.010, 3.0), (5, 0.011, 2.6), (200, 0.015, 1.5),
+                              (1000, 0.020, 1.5)], 0.023)
+    assert small.window(4) == pytest.approx((0.010 + 105e-5 + 0.003, 2.6))
 
 
 def test_lengths_are_scaled_to_the_tapes_per_cent(tmp_path: Path) -> None:

@@ -77,9 +77,11 @@ def test_tenzor_tour_is_the_recorded_one(name, tenzor_exe, tmp_path):
     others'. pcb1173 is here because the first move tried from the tool's
     start's side changes its tour and none of the others'. The work bound's
     count, an undone kick's reversals included, which pcb3038 pinned, is
-    pinned now by the demo's listing in docs/FILES.md.) Whether a
+    pinned now by the demo's listing in docs/FILES.md. d1291 and pcb3038
+    also pin the kicks' window growing with what they gain: theirs take
+    off more than half a per cent, the other four's less.) Whether a
     recorded tour is within 1 % of the optimum is the benchmark's verdict
-    (`make bench` prints MET or MISSED), not this test's: pcb1173's is
+    (`make bench` prints MET or MISSED), not this test's: d2103's is
     not."""
     recorded = {r["instance"]: r for r in report.read_csv(RECORDED)}[name]
     row = tsplib.run_instance(name, tenzor_exe, tmp_path, 1, 0.0, refs=False)
