@@ -25,9 +25,9 @@ window (40 quarters, ten kicks an item, by default), so that every shorter
 window can be read off the same trace: a window of W stops the kicks after
 W * N / 4 kicks in a row that all failed, and, as CMKICK's window grows
 with what the kept kicks have gained, three times as many more for each per
-cent beyond the first half (read from the trace's lengths, which may put a
-stop one kick off CMKICK's own sum of gains), at a time found from the
-trace's own cost of a kick. The tour's
+cent beyond the first half, up to eight times as many in all (read from the
+trace's lengths, which may put a stop one kick off CMKICK's own sum of
+gains), at a time found from the trace's own cost of a kick. The tour's
 per cent over the proven optimum is that of its TSPLIB length
 (:mod:`bench.tsplib`), each trace's lengths scaled by the ratio of the two
 at the trace's end. Printed, per instance: the kicks to come within 1 %
@@ -186,7 +186,8 @@ class Trace:
         """Stopped after ``w`` * items / 4 failed kicks in a row (at least
         one, as CMKICK counts them), a window that grows after each kept
         kick by three times itself for each per cent the kicks have taken
-        off beyond the first half (CMKICK's rule): (CPU seconds of the
+        off beyond the first half, up to eight times itself (CMKICK's
+        rule): (CPU seconds of the
         whole program, per cent). The trace's own window must be at least
         ``w``; past its end the run ends as it did."""
         t0, p0 = self.points[0][1], self.points[0][2]
@@ -201,7 +202,7 @@ class Trace:
             # the per cent of the first tour's length the kicks took off
             gained = 100.0 * (p0 - point[2]) / (100.0 + p0) - 0.5
             if gained > 0.0:
-                stag = base + int(3.0 * base * gained)
+                stag = min(base + int(3.0 * base * gained), 8 * base)
         return self.cpu, self.points[-1][2]
 
 

@@ -122,9 +122,11 @@ MUTANTS = [
     Mutant("legacy/cmkick.f", "GKEPT / TLEN0 - 0.5D0", "GKEPT / TLEN0 - 1.0D0",
            "the kicks' window grows only beyond the first per cent they gained, "
            "not the first half per cent"),
-    Mutant("legacy/cmkick.f", "NSTAG = NBASE + INT(3.0D0 *", "NSTAG = NBASE + INT(2.0D0 *",
+    Mutant("legacy/cmkick.f", "NSTAG = MIN(NBASE + INT(3.0D0 *", "NSTAG = MIN(NBASE + INT(2.0D0 *",
            "the kicks' window grows by half a kick an item for each per cent gained, "
            "not three quarters"),
+    Mutant("legacy/cmkick.f", "DBLE(NBASE) * GPCT), 8 * NBASE)", "DBLE(NBASE) * GPCT), 16 * NBASE)",
+           "the kicks' window grows up to four kicks an item, not two"),
     Mutant("legacy/cmorop.f", "      DO 50 K = 1, 3", "      DO 50 K = 1, 2",
            "Or-opt moves runs of one or two items only"),
     Mutant("legacy/cmknn.f", "PARAMETER (MXQ = 2, MXRING = 30, MXQEN = 4000)",

@@ -88,6 +88,11 @@ def test_the_window_grows_with_what_the_kicks_gain() -> None:
     small = kicks.Trace(100, [(0, 0.010, 3.0), (5, 0.011, 2.6), (200, 0.015, 1.5),
                               (1000, 0.020, 1.5)], 0.023)
     assert small.window(4) == pytest.approx((0.010 + 105e-5 + 0.003, 2.6))
+    # a gain of 3 % of the first tour (2.5 beyond the first half) would make
+    # it 100 + 750:
+    # it stops at eight times itself, 800, after kick 5
+    big = kicks.Trace(100, [(0, 0.010, 4.0), (5, 0.011, 0.88), (1000, 0.020, 0.88)], 0.023)
+    assert big.window(4) == pytest.approx((0.010 + 805e-5 + 0.003, 0.88))
 
 
 def test_lengths_are_scaled_to_the_tapes_per_cent(tmp_path: Path) -> None:
