@@ -106,7 +106,7 @@ MUTANTS = [
            "            if (deck(last:last) == achar(10)) last = last - 1",
            "card reader keeps the CR of a CRLF deck"),
     # the tour: faults that leave every tape valid and only the order worse or
-    # different, which the recorded tours (d198, pcb442, u574, pcb3038, the demo deck) catch
+    # different, which the recorded tours (seven TSPLIB instances, the demo deck) catch
     Mutant("legacy/cmkick.f", "      LMAX = MIN(50, NITM / 3)", "      LMAX = MIN(40, NITM / 3)",
            "kicks swap runs of up to 40 items, not 50"),
     Mutant("legacy/cmkick.f", "IF (MODE .EQ. 2) LM = MIN(450, MAX(LMAX, NITM / 3))",
@@ -119,14 +119,6 @@ MUTANTS = [
            "IF (MODE .EQ. 2) NBASE = MAX(NITM / 2, 1)",
            "the kicks of a small tape give up after half a failure an item in a row, "
            "not a quarter"),
-    Mutant("legacy/cmkick.f", "GKEPT / TLEN0 - 0.5D0", "GKEPT / TLEN0 - 1.0D0",
-           "the kicks' window grows only beyond the first per cent they gained, "
-           "not the first half per cent"),
-    Mutant("legacy/cmkick.f", "NSTAG = MIN(NBASE + INT(3.0D0 *", "NSTAG = MIN(NBASE + INT(2.0D0 *",
-           "the kicks' window grows by half a kick an item for each per cent gained, "
-           "not three quarters"),
-    Mutant("legacy/cmkick.f", "DBLE(NBASE) * GPCT), 8 * NBASE)", "DBLE(NBASE) * GPCT), 16 * NBASE)",
-           "the kicks' window grows up to four kicks an item, not two"),
     Mutant("legacy/cmorop.f", "      DO 50 K = 1, 3", "      DO 50 K = 1, 2",
            "Or-opt moves runs of one or two items only"),
     Mutant("legacy/cmknn.f", "PARAMETER (MXQ = 2, MXRING = 30, MXQEN = 4000)",
@@ -168,6 +160,16 @@ MUTANTS = [
            "a failed kick puts back all but the first move length it changed"),
     Mutant("legacy/cmtrev.f", "         CALL CMDMV(I2)", "         CALL CMDMV(I1)",
            "a reversal keeps the length of the move into it, not the one out of it"),
+    # the kicks' window that grows with what they gain (caught by d1291's,
+    # pcb3038's and fl1400's recorded tours)
+    Mutant("legacy/cmkick.f", "GKEPT / TLEN0 - 0.5D0", "GKEPT / TLEN0 - 1.0D0",
+           "the kicks' window grows only beyond the first per cent they gained, "
+           "not the first half per cent"),
+    Mutant("legacy/cmkick.f", "NSTAG = MIN(NBASE + INT(3.0D0 *", "NSTAG = MIN(NBASE + INT(2.0D0 *",
+           "the kicks' window grows by half a kick an item for each per cent gained, "
+           "not three quarters"),
+    Mutant("legacy/cmkick.f", "DBLE(NBASE) * GPCT), 8 * NBASE)", "DBLE(NBASE) * GPCT), 16 * NBASE)",
+           "the kicks' window grows up to four kicks an item, not two"),
 ]
 
 TESTS = ["python", "-m", "pytest", "-q", "-x", "--tb=no", "-rf", "-p", "no:cacheprovider", "-m",
