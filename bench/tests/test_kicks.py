@@ -107,11 +107,18 @@ def test_lengths_are_scaled_to_the_tapes_per_cent(tmp_path: Path) -> None:
         kicks.read_trace(tmp_path / "y.trc", 5, 2.0, 0.02)
 
 
-@pytest.mark.skipif(shutil.which("fpm") is None, reason="fpm is not on PATH")
-def test_the_traced_copy_searches_as_tenzor_does(tmp_path: Path) -> None:
+@pytest.fixture(scope="module")
+def traced(tmp_path_factory) -> Path:
+    """The traced copy of this tree's TENZOR, built once for the module."""
+    if shutil.which("fpm") is None:
+        pytest.skip("fpm is not on PATH")
+    return kicks.build_traced(ROOT, tmp_path_factory.mktemp("traced") / "tree")
+
+
+def test_the_traced_copy_searches_as_tenzor_does(traced: Path, tmp_path: Path) -> None:
     """No variable set: the traced copy punches d198's tapes byte for byte
     as this tree's TENZOR does. Traced, its last point is the tape's tour."""
-    exe = kicks.build_traced(ROOT, tmp_path / "tree")
+    exe = traced
     plain = measure.release_binary(ROOT)
     deck = tmp_path / "d198.crd"
     deck.write_text(tsplib.load("d198").deck(), encoding="ascii")
@@ -147,3 +154,19 @@ def test_the_report_names_a_run_that_never_came_within_1_per_cent() -> None:
     row = next(line for line in text.splitlines() if line.startswith("d198"))
     assert row.split()[2] == "never" and "40" in row.split()[3]
     assert "1 of 2" in text.splitlines()[-1]          # window 20: only the second run
+
+
+@pytest.mark.tenzor            # it runs a TENZOR (the traced copy): mutation runs select it
+@pytest.mark.parametrize("name, window", [("d657", 657 // 4), ("fl1400", 2 * 1400)])
+def test_the_kicks_stop_where_their_window_says(traced: Path, tmp_path: Path, name: str,
+                                                 window: int) -> None:
+    """CMKICK's window, read off a traced run with the fixed seed: the kicks
+    stop when the window's failed kicks in a row follow the last kept one.
+    d657's kicks take off 0.29 % of its first tour, less than half a per
+    cent, so its window stays a quarter of a kick an item; fl1400's take off
+    8 %, far past what grows the window to its cap, two kicks an item."""
+    tr = kicks.run_traced(traced, name, 1977, 1, tmp_path)
+    p0, last = tr.points[0][2], tr.points[-2][2]
+    gained = 100 * (p0 - last) / (100 + p0)
+    assert (gained < 0.5) == (name == "d657"), gained
+    assert tr.kicks - tr.points[-2][0] == window
