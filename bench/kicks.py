@@ -72,7 +72,8 @@ TRACE_ABOVE = 150
 #: The instrumentation of legacy/cmkick.f: (a line block of the file, what
 #: replaces it). Each block must occur exactly once.
 PATCH: tuple[tuple[str, str], ...] = (
-    ("      EXTERNAL CMTLEN\n",
+    ("      DOUBLE PRECISION DIST, GKEPT, GPCT\n",
+     "      DOUBLE PRECISION DIST, GKEPT, GPCT, CMTLEN\n"
      "      EXTERNAL CMTLEN\n"
      "      CHARACTER*80 ENVV\n"
      "      INTEGER ITRC, NWIN\n"
