@@ -221,8 +221,7 @@ def read_trace(path: Path, items: int, pct_end: float, cpu: float) -> Trace:
 def run_traced(exe: Path, name: str, seed: int, window: int, scratch: Path) -> Trace:
     """One run of the traced TENZOR on a TSPLIB instance."""
     inst = tsplib.load(name)
-    deck = scratch / f"{name}.crd"
-    deck.write_text(inst.deck(), encoding="ascii")
+    deck = tsplib.write_deck(inst, scratch)
     trc = scratch / f"{name}.{seed}.trc"
     trc.unlink(missing_ok=True)
     out = scratch / name
@@ -231,8 +230,7 @@ def run_traced(exe: Path, name: str, seed: int, window: int, scratch: Path) -> T
         _, cpu = measure.run_once(exe, deck, out, env)
     except RuntimeError as exc:
         raise KicksError(str(exc)) from None
-    stats = measure.read_tapes(out, inst.name.upper()[:8])
-    length = inst.tour_length(tsplib.tenzor_cycle(inst, stats["small"].run))
+    length = tsplib.tenzor_length(inst, out)
     return read_trace(trc, len(inst.nodes), 100 * (length / inst.optimum - 1), cpu)
 
 

@@ -143,6 +143,20 @@ def tenzor_cycle(inst: Instance, run) -> list[int]:
     return cycle
 
 
+def write_deck(inst: Instance, scratch: Path) -> Path:
+    """The instance's deck, written to ``scratch/NAME.crd``; its path."""
+    deck = scratch / f"{inst.name}.crd"
+    deck.write_text(inst.deck(), encoding="ascii")
+    return deck
+
+
+def tenzor_length(inst: Instance, out: Path) -> int:
+    """The length, in the instance's own distance, of the tour TENZOR's
+    small-pad tape in ``out`` punches."""
+    stats = measure.read_tapes(out, inst.name.upper()[:8])
+    return inst.tour_length(tenzor_cycle(inst, stats["small"].run))
+
+
 def _problem(inst: Instance) -> str:
     return (f"NAME : {inst.name}\nTYPE : TSP\nDIMENSION : {len(inst.nodes)}\n"
             f"EDGE_WEIGHT_TYPE : {inst.kind}\nNODE_COORD_SECTION\n"
@@ -199,13 +213,11 @@ def run_instance(name: str, exe: Path, scratch: Path, repeats: int,
                  min_seconds: float = 1.0, refs: bool = True) -> dict:
     """Every figure of one instance, as a row of report.TSPLIB_COLUMNS."""
     inst = load(name)
-    deck = scratch / f"{name}.crd"
-    deck.write_text(inst.deck(), encoding="ascii")
+    deck = write_deck(inst, scratch)
     out = scratch / name
     seconds, cpu = measure.time_tenzor(exe, deck, out, repeats, budget=min_seconds)
     rss_kb = measure.peak_rss(exe, deck, out)
-    stats = measure.read_tapes(out, inst.name.upper()[:8])
-    length = inst.tour_length(tenzor_cycle(inst, stats["small"].run))
+    length = tenzor_length(inst, out)
     row: dict = {"instance": name, "nodes": len(inst.nodes), "type": inst.kind,
                  "optimum": inst.optimum, "tenzor_len": length,
                  "tenzor_pct": 100.0 * (length / inst.optimum - 1),

@@ -89,8 +89,7 @@ def test_the_window_grows_with_what_the_kicks_gain() -> None:
                               (1000, 0.020, 1.5)], 0.023)
     assert small.window(4) == pytest.approx((0.010 + 105e-5 + 0.003, 2.6))
     # a gain of 3 % of the first tour (2.5 beyond the first half) would make
-    # it 100 + 750:
-    # it stops at eight times itself, 800, after kick 5
+    # it 100 + 750; it stops at eight times itself, 800, after kick 5
     big = kicks.Trace(100, [(0, 0.010, 4.0), (5, 0.011, 0.88), (1000, 0.020, 0.88)], 0.023)
     assert big.window(4) == pytest.approx((0.010 + 805e-5 + 0.003, 0.88))
 
@@ -118,12 +117,11 @@ def traced(tmp_path_factory) -> Path:
 def test_the_traced_copy_searches_as_tenzor_does(traced: Path, tmp_path: Path) -> None:
     """No variable set: the traced copy punches d198's tapes byte for byte
     as this tree's TENZOR does. Traced, its last point is the tape's tour."""
-    exe = traced
     plain = measure.release_binary(ROOT)
     deck = tmp_path / "d198.crd"
     deck.write_text(tsplib.load("d198").deck(), encoding="ascii")
     env = {k: v for k, v in os.environ.items() if not k.startswith("TZ")}
-    for exe_, out in ((exe, "a"), (plain, "b")):
+    for exe_, out in ((traced, "a"), (plain, "b")):
         subprocess.run([str(exe_), str(deck), "-o", str(tmp_path / out)], env=env, check=True,
                        capture_output=True)
     names = sorted(p.name for p in (tmp_path / "a").iterdir())
@@ -131,7 +129,7 @@ def test_the_traced_copy_searches_as_tenzor_does(traced: Path, tmp_path: Path) -
     _, mismatch, errors = filecmp.cmpfiles(tmp_path / "a", tmp_path / "b", names,
                                                shallow=False)
     assert not mismatch and not errors
-    tr = kicks.run_traced(exe, "d198", 1977, 40, tmp_path)
+    tr = kicks.run_traced(traced, "d198", 1977, 40, tmp_path)
     assert tr.items == 198 and tr.kicks > 10 * 198
     pcts = [p for _, _, p in tr.points]
     assert all(b <= a + 1e-9 for a, b in zip(pcts, pcts[1:]))   # kept kicks only shorten
