@@ -7,8 +7,9 @@ itself is not touched), whose ``CMKICK`` also
 
 * takes its seed from the environment variable ``TZSEED`` (default 1977,
   TENZOR's own) and its window, the failed kicks in a row after which the
-  kicks stop, in quarters of a kick an item, from ``TZWIN`` (default 1,
-  TENZOR's own: a quarter of a kick an item);
+  kicks stop, in quarters of a kick an item (at least 160 kicks, as
+  TENZOR's), from ``TZWIN`` (default 1, TENZOR's own: a quarter of a kick
+  an item);
 * on a tape of more than 150 items (on a TSPLIB deck, the small-pad tape:
   the others are empty) appends to the file ``TZTRACE`` names a line when
   the kicks begin, one at each kick kept and one when they stop: the
@@ -23,7 +24,8 @@ has changed so that a line is no longer there, the tool says which.
 Each instance of ``bench/tsplib/`` is run once with each seed under a long
 window (40 quarters, ten kicks an item, by default), so that every shorter
 window can be read off the same trace: a window of W stops the kicks after
-W * N / 4 kicks in a row that all failed, and, as CMKICK's window grows
+W * N / 4 kicks in a row that all failed (at least 160, as CMKICK's
+least window), and, as CMKICK's window grows
 with what the kept kicks have gained, three times as many more for each per
 cent beyond the first half, up to eight times as many in all (read from the
 trace's lengths, which may put a stop one kick off CMKICK's own sum of
@@ -68,6 +70,10 @@ AT_MS: tuple[int, ...] = (25, 50, 100, 200, 400)
 WINDOWS: tuple[int, ...] = (1, 2, 4, 8, 20)
 #: Tapes of at most this many items are not traced.
 TRACE_ABOVE = 150
+#: CMKICK's least window before any gain, in failed kicks in a row (it
+#: applies to windows of every size here: W * N / 4 kicks, but at least
+#: this many).
+LEAST_WINDOW = 160
 
 #: The instrumentation of legacy/cmkick.f: (a line block of the file, what
 #: replaces it). Each block must occur exactly once.
@@ -93,8 +99,8 @@ PATCH: tuple[tuple[str, str], ...] = (
      "         CALL CPU_TIME(TCPU)\n"
      "         WRITE (77, *) 0, TCPU, CMTLEN()\n"
      "      END IF\n"),
-    ("      IF (MODE .EQ. 2) NBASE = MAX(NITM / 4, 1)\n",
-     "      IF (MODE .EQ. 2) NBASE = MAX(NWIN * NITM / 4, 1)\n"),
+    ("      IF (MODE .EQ. 2) NBASE = MAX(NITM / 4, 160)\n",
+     f"      IF (MODE .EQ. 2) NBASE = MAX(NWIN * NITM / 4, {LEAST_WINDOW})\n"),
     ("            KLAST = KK\n",
      "            KLAST = KK\n"
      "            IF (ITRC .EQ. 1) THEN\n"
@@ -156,6 +162,7 @@ class Trace:
     items: int
     points: list[tuple[int, float, float]]
     cpu: float
+    least: int = LEAST_WINDOW
 
     @property
     def kicks(self) -> int:
@@ -185,7 +192,7 @@ class Trace:
 
     def window(self, w: int) -> tuple[float, float]:
         """Stopped after ``w`` * items / 4 failed kicks in a row (at least
-        one, as CMKICK counts them), a window that grows after each kept
+        ``least``, as CMKICK counts them), a window that grows after each kept
         kick by three times itself for each per cent the kicks have taken
         off beyond the first half, up to eight times itself (CMKICK's
         rule): (CPU seconds of the
@@ -193,7 +200,7 @@ class Trace:
         ``w``; past its end the run ends as it did."""
         t0, p0 = self.points[0][1], self.points[0][2]
         last = self.points[0]
-        base = max(w * self.items // 4, 1)
+        base = max(w * self.items // 4, self.least)
         stag = base
         for point in self.points[1:-1] + [(self.kicks + 10**9, 0.0, 0.0)]:
             if point[0] - last[0] > stag:
