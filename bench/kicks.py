@@ -7,14 +7,15 @@ itself is not touched), whose ``CMKICK`` also
 
 * takes its seed from the environment variable ``TZSEED`` (default 1977,
   TENZOR's own) and its window, the failed kicks in a row after which the
-  kicks stop, in quarters of a kick an item (at least 160 kicks, as
-  TENZOR's), from ``TZWIN`` (default 1, TENZOR's own: a quarter of a kick
-  an item);
+  kicks stop, in quarters of a kick an item (at least 160 kicks where
+  TENZOR's is: when the tour comes back from a far start point), from
+  ``TZWIN`` (default 1, TENZOR's own: a quarter of a kick an item);
 * on a tape of more than 150 items (on a TSPLIB deck, the small-pad tape:
   the others are empty) appends to the file ``TZTRACE`` names a line when
   the kicks begin, one at each kick kept and one when they stop: the
   kick's number (negated on the last line), the process's CPU seconds so
-  far and the tour's length in the tape's units.
+  far and the tour's length in the tape's units; the first line also the
+  least window CMKICK took (1, or 160).
 
 The instrumentation uses GNU Fortran's ``GETENV``: it is a tool for
 measuring, never part of TENZOR, whose legacy/ stays FORTRAN 77. It is put
@@ -24,8 +25,9 @@ has changed so that a line is no longer there, the tool says which.
 Each instance of ``bench/tsplib/`` is run once with each seed under a long
 window (40 quarters, ten kicks an item, by default), so that every shorter
 window can be read off the same trace: a window of W stops the kicks after
-W * N / 4 kicks in a row that all failed (at least 160, as CMKICK's
-least window), and, as CMKICK's window grows
+W * N / 4 kicks in a row that all failed (at least 160 where CMKICK's
+least window applies, which the trace's first line says), and, as CMKICK's
+window grows
 with what the kept kicks have gained, three times as many more for each per
 cent beyond the first half, up to eight times as many in all (read from the
 trace's lengths, which may put a stop one kick off CMKICK's own sum of
@@ -70,9 +72,10 @@ AT_MS: tuple[int, ...] = (25, 50, 100, 200, 400)
 WINDOWS: tuple[int, ...] = (1, 2, 4, 8, 20)
 #: Tapes of at most this many items are not traced.
 TRACE_ABOVE = 150
-#: CMKICK's least window before any gain, in failed kicks in a row (it
-#: applies to windows of every size here: W * N / 4 kicks, but at least
-#: this many).
+#: CMKICK's least window before any gain, in failed kicks in a row, when
+#: the tour comes back from a far start point (the trace's first line says
+#: whether it does); it applies to windows of every size here: W * N / 4
+#: kicks, but at least this many.
 LEAST_WINDOW = 160
 
 #: The instrumentation of legacy/cmkick.f: (a line block of the file, what
@@ -93,14 +96,15 @@ PATCH: tuple[tuple[str, str], ...] = (
      "      IF (ENVV .NE. ' ') READ (ENVV, *) NWIN\n"
      "      ITRC = 0\n"
      "      CALL GETENV('TZTRACE', ENVV)\n"
-     f"      IF (ENVV .NE. ' ' .AND. NITM .GT. {TRACE_ABOVE}) THEN\n"
-     "         ITRC = 1\n"
+     f"      IF (ENVV .NE. ' ' .AND. NITM .GT. {TRACE_ABOVE}) ITRC = 1\n"),
+    ("      IF (MODE .EQ. 2) NBASE = MAX(NITM / 4, NLEAST)\n      NSTAG = NBASE\n",
+     "      IF (MODE .EQ. 2) NBASE = MAX(NWIN * NITM / 4, NLEAST)\n"
+     "      NSTAG = NBASE\n"
+     "      IF (ITRC .EQ. 1) THEN\n"
      "         OPEN (77, FILE=ENVV, STATUS='UNKNOWN', POSITION='APPEND')\n"
      "         CALL CPU_TIME(TCPU)\n"
-     "         WRITE (77, *) 0, TCPU, CMTLEN()\n"
+     "         WRITE (77, *) 0, TCPU, CMTLEN(), NLEAST\n"
      "      END IF\n"),
-    ("      IF (MODE .EQ. 2) NBASE = MAX(NITM / 4, 160)\n",
-     f"      IF (MODE .EQ. 2) NBASE = MAX(NWIN * NITM / 4, {LEAST_WINDOW})\n"),
     ("            KLAST = KK\n",
      "            KLAST = KK\n"
      "            IF (ITRC .EQ. 1) THEN\n"
@@ -162,7 +166,7 @@ class Trace:
     items: int
     points: list[tuple[int, float, float]]
     cpu: float
-    least: int = LEAST_WINDOW
+    least: int = 1
 
     @property
     def kicks(self) -> int:
@@ -220,9 +224,11 @@ def read_trace(path: Path, items: int, pct_end: float, cpu: float) -> Trace:
     rows = [line.split() for line in path.read_text().splitlines() if line.strip()]
     if len(rows) < 2:
         raise KicksError(f"{path}: no trace (is the tape over {TRACE_ABOVE} items?)")
-    pts = [(abs(int(k)), float(t), float(x)) for k, t, x in rows]
+    # the first line's fourth number: the least window CMKICK took
+    least = int(rows[0][3]) if len(rows[0]) > 3 else 1
+    pts = [(abs(int(k)), float(t), float(x)) for k, t, x, *_ in rows]
     scale = (1 + pct_end / 100) / pts[-1][2]
-    return Trace(items, [(k, t, 100 * (x * scale - 1)) for k, t, x in pts], cpu)
+    return Trace(items, [(k, t, 100 * (x * scale - 1)) for k, t, x in pts], cpu, least)
 
 
 def run_traced(exe: Path, name: str, seed: int, window: int, scratch: Path) -> Trace:

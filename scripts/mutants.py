@@ -115,8 +115,8 @@ MUTANTS = [
     Mutant("legacy/cmkick.f", "         IF (DGAIN .LE. 1.0D-6) THEN",
            "         IF (DGAIN .LT. -1.0D-6) THEN",
            "a kick that leaves the tour no shorter is kept"),
-    Mutant("legacy/cmkick.f", "IF (MODE .EQ. 2) NBASE = MAX(NITM / 4, 160)",
-           "IF (MODE .EQ. 2) NBASE = MAX(NITM / 2, 160)",
+    Mutant("legacy/cmkick.f", "IF (MODE .EQ. 2) NBASE = MAX(NITM / 4, NLEAST)",
+           "IF (MODE .EQ. 2) NBASE = MAX(NITM / 2, NLEAST)",
            "the kicks of a small tape give up after half a failure an item in a row, "
            "not a quarter"),
     Mutant("legacy/cmorop.f", "      DO 50 K = 1, 3", "      DO 50 K = 1, 2",
@@ -170,9 +170,11 @@ MUTANTS = [
            "not three quarters"),
     Mutant("legacy/cmkick.f", "DBLE(NBASE) * GPCT), 8 * NBASE)", "DBLE(NBASE) * GPCT), 16 * NBASE)",
            "the kicks' window grows up to four kicks an item, not two"),
-    Mutant("legacy/cmkick.f", "IF (MODE .EQ. 2) NBASE = MAX(NITM / 4, 160)",
-           "IF (MODE .EQ. 2) NBASE = MAX(NITM / 4, 100)",
+    Mutant("legacy/cmkick.f", "     1   NLEAST = 160", "     1   NLEAST = 100",
            "the kicks' least window is 100 failed kicks, not 160"),
+    Mutant("legacy/cmkick.f", ".GT. 0.125D0 * TLEN0)", ".GT. 0.25D0 * TLEN0)",
+           "the least window only where the start point's two moves make over a quarter "
+           "of the tour, not an eighth"),
 ]
 
 TESTS = ["python", "-m", "pytest", "-q", "-x", "--tb=no", "-rf", "-p", "no:cacheprovider", "-m",

@@ -24,7 +24,7 @@ CMKICK = ROOT / "legacy" / "cmkick.f"
 
 def test_the_trace_fits_cmkick_and_compiles(tmp_path: Path) -> None:
     text = kicks.traced_source(CMKICK.read_text(encoding="ascii"))
-    assert "GETENV('TZTRACE'" in text and "NBASE = MAX(NWIN * NITM / 4, 160)" in text
+    assert "GETENV('TZTRACE'" in text and "NBASE = MAX(NWIN * NITM / 4, NLEAST)" in text
     src = tmp_path / "cmkick.f"
     src.write_text(text, encoding="ascii")
     gfortran = shutil.which("gfortran")
@@ -37,10 +37,10 @@ def test_the_trace_fits_cmkick_and_compiles(tmp_path: Path) -> None:
 
 def test_a_moved_line_is_named() -> None:
     text = CMKICK.read_text(encoding="ascii").replace(
-        "      IF (MODE .EQ. 2) NBASE = MAX(NITM / 4, 160)\n",
-        "      IF (MODE .EQ. 2) NBASE = MAX(NITM / 2, 160)\n")
+        "      IF (MODE .EQ. 2) NBASE = MAX(NITM / 4, NLEAST)\n",
+        "      IF (MODE .EQ. 2) NBASE = MAX(NITM / 2, NLEAST)\n")
     with pytest.raises(kicks.KicksError,
-                       match=r"0 copies of the line 'IF \(MODE \.EQ\. 2\) NBASE = MAX\(NITM / 4, 160\)'"):
+                       match=r"0 copies of the line 'IF \(MODE \.EQ\. 2\) NBASE = MAX\(NITM / 4, NLEAST\)'"):
         kicks.traced_source(text)
 
 
@@ -76,9 +76,10 @@ def test_shorter_windows_read_off_a_trace() -> None:
 
 
 def test_a_window_is_at_least_the_least_one() -> None:
-    # with CMKICK's least window (160 kicks) every window of a 10-item
-    # trace is 160 failed kicks: longer than the run, which ends as it did
-    assert kicks.Trace(10, [], 0.0).least == kicks.LEAST_WINDOW == 160
+    # with CMKICK's least window (160 kicks, where the tour comes back from
+    # a far start point) every window of a 10-item trace is 160 failed
+    # kicks: longer than the run, which ends as it did
+    assert kicks.Trace(10, [], 0.0).least == 1 and kicks.LEAST_WINDOW == 160
     tr = _trace(kicks.LEAST_WINDOW)
     assert tr.window(1) == tr.window(40) == pytest.approx((0.023, 0.9))
     # a least window of 40: kick 40 comes 37 after kick 3, and the kicks
@@ -114,6 +115,10 @@ def test_lengths_are_scaled_to_the_tapes_per_cent(tmp_path: Path) -> None:
     assert [k for k, _, _ in tr.points] == [0, 7, 9]
     assert tr.points[-1][2] == pytest.approx(2.0)
     assert tr.points[0][2] == pytest.approx(100 * (1100 * 1.02 / 1020 - 1))
+    assert tr.least == 1
+    # the first line's fourth number is the least window CMKICK took
+    f.write_text("  0  1.0E-02  1100.0  160\n  -9  1.5E-02  1020.0\n")
+    assert kicks.read_trace(f, 5, 2.0, 0.02).least == 160
     (tmp_path / "y.trc").write_text("  0  1.0E-02  1100.0\n")
     with pytest.raises(kicks.KicksError, match="no trace"):
         kicks.read_trace(tmp_path / "y.trc", 5, 2.0, 0.02)
@@ -168,18 +173,18 @@ def test_the_report_names_a_run_that_never_came_within_1_per_cent() -> None:
 
 
 @pytest.mark.tenzor            # it runs a TENZOR (the traced copy): mutation runs select it
-@pytest.mark.parametrize("name, window", [("d198", kicks.LEAST_WINDOW), ("d657", 657 // 4),
-                                          ("fl1400", 2 * 1400)])
+@pytest.mark.parametrize("name, window", [("d657", 657 // 4), ("fl1400", 2 * 1400)])
 def test_the_kicks_stop_where_their_window_says(traced: Path, tmp_path: Path, name: str,
                                                  window: int) -> None:
     """CMKICK's window, read off a traced run with the fixed seed: the kicks
     stop when the window's failed kicks in a row follow the last kept one.
-    d198's kicks keep none, so its window stays the least one, 160 kicks;
-    d657's take off 0.29 % of its first tour, less than half a per cent, so
-    its window stays a quarter of a kick an item; fl1400's take off 8 %,
-    far past what grows the window to its cap, two kicks an item."""
+    d657's kicks take off 0.29 % of its first tour, less than half a per
+    cent, so its window stays a quarter of a kick an item; fl1400's take off
+    8 %, far past what grows the window to its cap, two kicks an item.
+    Neither tour comes back from a far start point (no least window)."""
     tr = kicks.run_traced(traced, name, 1977, 1, tmp_path)
     p0, last = tr.points[0][2], tr.points[-2][2]
     gained = 100 * (p0 - last) / (100 + p0)
-    assert (gained < 0.5) == (name != "fl1400"), gained
+    assert (gained < 0.5) == (name == "d657"), gained
+    assert tr.least == 1
     assert tr.kicks - tr.points[-2][0] == window
