@@ -322,19 +322,14 @@ def build_parser() -> argparse.ArgumentParser:
 
 def main(argv: list[str] | None = None) -> int:
     args = build_parser().parse_args(argv)
-    names = [n for n in args.names.split(",") if n]
-    bad = [n for n in names if n not in tsplib.NAMES]
+    names, problem = tsplib.parse_names("--names", args.names)
     try:
         seeds = [int(s) for s in args.seeds.split(",") if s]
     except ValueError:
         seeds = []
-    problem = None
-    if bad or not names:
-        problem = (f"--names {args.names!r}: the instances are of bench/tsplib/: "
-                   + ", ".join(tsplib.NAMES))
-    elif not seeds:
+    if problem is None and not seeds:
         problem = f"--seeds {args.seeds!r}: give whole numbers separated by commas"
-    elif args.window < max(WINDOWS):
+    elif problem is None and args.window < max(WINDOWS):
         problem = (f"--window {args.window}: at least {max(WINDOWS)}, so that every "
                    "window of the report can be read off the traces")
     if problem is not None:

@@ -112,6 +112,16 @@ class Instance:
                           job=f"TSPLIB {self.name.upper()}")
 
 
+def parse_names(option: str, text: str) -> tuple[list[str], str | None]:
+    """The instances a comma-separated ``text`` names, and None; or, when it
+    names none or one that is not in bench/tsplib/, a message that says so
+    for the command-line ``option``."""
+    names = [n for n in text.split(",") if n]
+    if names and all(n in NAMES for n in names):
+        return names, None
+    return names, f"{option} {text!r}: the instances are of bench/tsplib/: " + ", ".join(NAMES)
+
+
 def load(name: str) -> Instance:
     """Read ``bench/tsplib/NAME.tsp`` and check its DIMENSION."""
     head, body = (DIR / f"{name}.tsp").read_text(encoding="ascii").split("NODE_COORD_SECTION")

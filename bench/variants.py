@@ -140,11 +140,9 @@ def build_parser() -> argparse.ArgumentParser:
 
 def main(argv: list[str] | None = None) -> int:
     args = build_parser().parse_args(argv)
-    names = [n for n in args.names.split(",") if n]
-    bad = [n for n in names if n not in tsplib.NAMES]
-    if bad or not names:
-        print(f"bench.variants: --names {args.names!r}: the instances are of bench/tsplib/: "
-              + ", ".join(tsplib.NAMES), file=sys.stderr)
+    names, problem = tsplib.parse_names("--names", args.names)
+    if problem is not None:
+        print(f"bench.variants: {problem}", file=sys.stderr)
         return 2
     if args.tenzor is not None and not args.tenzor.is_file():
         print(f"bench.variants: --tenzor {args.tenzor}: no such file", file=sys.stderr)
