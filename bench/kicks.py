@@ -72,11 +72,6 @@ AT_MS: tuple[int, ...] = (25, 50, 100, 200, 400)
 WINDOWS: tuple[int, ...] = (1, 2, 4, 8, 20)
 #: Tapes of at most this many items are not traced.
 TRACE_ABOVE = 150
-#: CMKICK's least window before any gain, in failed kicks in a row, when
-#: the tour comes back from a far start point (the trace's first line says
-#: whether it does); it applies to windows of every size here: W * N / 4
-#: kicks, but at least this many.
-LEAST_WINDOW = 160
 
 #: The instrumentation of legacy/cmkick.f: (a line block of the file, what
 #: replaces it). Each block must occur exactly once.
@@ -162,7 +157,9 @@ def build_traced(tree: Path, work: Path) -> Path:
 class Trace:
     """One traced run: ``points`` (kick, CPU s, per cent over the optimum),
     the first when the kicks begin, the last when they stop (its kick
-    number the kicks made); ``cpu`` the whole process's CPU seconds."""
+    number the kicks made); ``cpu`` the whole process's CPU seconds;
+    ``least`` the least window CMKICK took (1, or 160 where the tour came
+    back from a far start point), read off the trace's first line."""
     items: int
     points: list[tuple[int, float, float]]
     cpu: float
@@ -231,13 +228,15 @@ def read_trace(path: Path, items: int, pct_end: float, cpu: float) -> Trace:
     return Trace(items, [(k, t, 100 * (x * scale - 1)) for k, t, x in pts], cpu, least)
 
 
-def run_traced(exe: Path, name: str, seed: int, window: int, scratch: Path) -> Trace:
-    """One run of the traced TENZOR on a TSPLIB instance."""
-    inst = tsplib.load(name)
+def run_traced(exe: Path, name: str | tsplib.Instance, seed: int, window: int,
+               scratch: Path) -> Trace:
+    """One run of the traced TENZOR on a TSPLIB instance (by name, or as
+    another deck of it, bench.variants)."""
+    inst = tsplib.load(name) if isinstance(name, str) else name
     deck = tsplib.write_deck(inst, scratch)
-    trc = scratch / f"{name}.{seed}.trc"
+    trc = scratch / f"{inst.name}.{seed}.trc"
     trc.unlink(missing_ok=True)
-    out = scratch / name
+    out = scratch / inst.name
     env = dict(os.environ, TZTRACE=str(trc), TZSEED=str(seed), TZWIN=str(window))
     try:
         _, cpu = measure.run_once(exe, deck, out, env)
