@@ -153,8 +153,7 @@ MUTANTS = [
     Mutant("legacy/cmlk3.f", "            IF (KADD(IT5) .EQ. ICHN) GOTO 270",
            "            IF (KADD(IT5) .EQ. -1) GOTO 270",
            "the chain's step that goes on may take out a move the chain changed"),
-    Mutant("legacy/cmlk3.f", "PARAMETER (MXDEP = 50, MXREV = 3 * MXDEP, MXC = 8)",
-           "PARAMETER (MXDEP = 50, MXREV = 3 * MXDEP, MXC = 7)",
+    Mutant("legacy/cmlk3.f", "      NBRD = 8\n", "      NBRD = 7\n",
            "the chain tries the 7 nearest ends of t2 and t4, not 8"),
     Mutant("legacy/cmkick.f", "            DO 32 J = NDJ, 1, -1", "            DO 32 J = NDJ, 2, -1",
            "a failed kick puts back all but the first move length it changed"),
@@ -175,6 +174,12 @@ MUTANTS = [
     Mutant("legacy/cmkick.f", ".GT. 0.125D0 * TLEN0)", ".GT. 0.25D0 * TLEN0)",
            "the least window only where the start point's two moves make over a quarter "
            "of the tour, not an eighth"),
+    # the chain's breadth of 16 on a tape of more than 2000 items (caught
+    # by d2103's and pcb3038's recorded tours)
+    Mutant("legacy/cmlk3.f", "IF (NITM .GT. 2000) NBRD = 16", "IF (NITM .GT. 3000) NBRD = 16",
+           "the chain tries 16 near ends only on a tape of more than 3000 items, not 2000"),
+    Mutant("legacy/cmlk3.f", "IF (NITM .GT. 2000) NBRD = 16", "IF (NITM .GT. 2000) NBRD = 12",
+           "the chain tries 12 near ends on a tape of more than 2000 items, not 16"),
 ]
 
 TESTS = ["python", "-m", "pytest", "-q", "-x", "--tb=no", "-rf", "-p", "no:cacheprovider", "-m",
