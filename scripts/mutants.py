@@ -175,7 +175,8 @@ MUTANTS = [
            "the least window only where the start point's two moves make over a quarter "
            "of the tour, not an eighth"),
     # the chain's breadth of 16 on a tape of more than 2000 items (caught
-    # by d2103's and pcb3038's recorded tours)
+    # by d2103's recorded tour; the first also leaves pcb3038's, of 3038
+    # items, as it is)
     Mutant("legacy/cmlk3.f", "IF (NITM .GT. 2000) NBRD = 16", "IF (NITM .GT. 3000) NBRD = 16",
            "the chain tries 16 near ends only on a tape of more than 3000 items, not 2000"),
     Mutant("legacy/cmlk3.f", "IF (NITM .GT. 2000) NBRD = 16", "IF (NITM .GT. 2000) NBRD = 12",
