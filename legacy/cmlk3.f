@@ -111,7 +111,7 @@ C     ---- LOCAL -------------------------------------------------------
      6        JBC, L, I, NBRD
       LOGICAL L2OPT
       DOUBLE PRECISION G0, G1, G2, G3, G4, GAIN, BESTG, D23, D45, DNR,
-     1        DIST
+     1        D51, DIST
       INTEGER CMLPS, CMLED
       EXTERNAL CMLPS, CMLED
       INTEGER JX1, JY1, JX2, JY2
@@ -226,6 +226,19 @@ C        ---- T5 A NEAR END OF T4, T6 ACROSS ITS MOVE -----------------
             NEV = NEV + 1
             IT5 = IQ5
             IF (NR5 .EQ. 2) IT5 = 2 * M5 - 2 + L
+C           T6 IS ACROSS THE MOVE OF T5, WHOSE LENGTH IS DMV(T5), SO
+C           T6-T1 IS AT LEAST T5-T1 LESS DMV(T5). THE STEP CAN CLOSE
+C           SHORTER ONLY IF T5-T1 IS SHORTER THAN G4 + DMV(T5), AND BE
+C           THE BEST SO FAR ONLY IF G4 IS ABOVE BESTG: A T5 THAT CAN DO
+C           NEITHER IS PASSED BY BEFORE ITS PLACE IS LOOKED UP (TWO IN
+C           THREE OF THEM ON TSPLIB'S DRILLING BOARDS). THE SAME STEPS
+C           ARE MADE; THE 1.0D-6 MORE KEEPS ROUNDING ON THE SAFE SIDE.
+            G4 = G3 + DMV(IT5)
+            IF (G4 .LE. BESTG) THEN
+               D51 = G4 + DMV(IT5) + 1.0D-6
+               IF ((DBLE(KQX(IT5)) - IX1)**2 + (DBLE(KQY(IT5)) - IY1)**2
+     1             .GE. D51**2) GOTO 270
+            END IF
             IP5 = 2 * IPOS(M5) - 1 + ABS(IT5 - 2 * M5 + 1 - IORI(M5))
             IB5 = IP5 / 2
             IF (IB5 .EQ. IB1 .OR. IB5 .EQ. IB3) GOTO 270
@@ -265,7 +278,6 @@ C           T6 (CMLED AND CMLXY WRITTEN OUT: THE INNERMOST LOOP)
                IX6 = KQX(IT6)
                IY6 = KQY(IT6)
             END IF
-            G4 = G3 + DMV(IT5)
 C           THE STEP CLOSES SHORTER IF T6-T1 IS SHORTER THAN G4: THE
 C           SQUARES FIRST, THE ROOT ONLY THEN
             GAIN = 0.0D0

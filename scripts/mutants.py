@@ -181,6 +181,13 @@ MUTANTS = [
            "the chain tries 16 near ends only on a tape of more than 3000 items, not 2000"),
     Mutant("legacy/cmlk3.f", "IF (NITM .GT. 2000) NBRD = 16", "IF (NITM .GT. 2000) NBRD = 12",
            "the chain tries 12 near ends on a tape of more than 2000 items, not 16"),
+    # the chain passes by a t5 that can neither close shorter nor be the
+    # best step, by the triangle t5-t1 <= t5-t6 + t6-t1: the bound must
+    # count the move t5-t6, else steps that would close are lost
+    Mutant("legacy/cmlk3.f", "               D51 = G4 + DMV(IT5) + 1.0D-6",
+           "               D51 = G4 + 1.0D-6",
+           "the chain's bound on t5-t1 leaves out the move of t5, and passes by t5 "
+           "whose step could close shorter"),
 ]
 
 TESTS = ["python", "-m", "pytest", "-q", "-x", "--tb=no", "-rf", "-p", "no:cacheprovider", "-m",
