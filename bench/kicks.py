@@ -228,11 +228,11 @@ def read_trace(path: Path, items: int, pct_end: float, cpu: float) -> Trace:
     return Trace(items, [(k, t, 100 * (x * scale - 1)) for k, t, x in pts], cpu, least)
 
 
-def run_traced(exe: Path, name: str | tsplib.Instance, seed: int, window: int,
+def run_traced(exe: Path, instance: str | tsplib.Instance, seed: int, window: int,
                scratch: Path) -> Trace:
     """One run of the traced TENZOR on a TSPLIB instance (by name, or as
     another deck of it, bench.variants)."""
-    inst = tsplib.load(name) if isinstance(name, str) else name
+    inst = tsplib.load(instance) if isinstance(instance, str) else instance
     deck = tsplib.write_deck(inst, scratch)
     trc = scratch / f"{inst.name}.{seed}.trc"
     trc.unlink(missing_ok=True)
