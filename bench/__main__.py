@@ -8,8 +8,9 @@ writes ``bench.csv``, ``bench.txt`` (the table and the targets),
 (default ``out/bench``; the decks and tapes go to ``--out``/scratch).
 Then the TSPLIB drilling problems of ``bench/tsplib/`` (:mod:`bench.tsplib`):
 TENZOR's tour against the proven optimum, LKH-3's single run and OR-Tools,
-into ``tsplib.csv`` and the same text files (``--tsplib``, ``--no-tsplib``).
-``--report CSV`` re-renders an earlier run without running anything.
+into ``tsplib.csv``, ``tsplib.svg`` and the same text files (``--tsplib``,
+``--no-tsplib``). ``--report CSV`` re-renders an earlier run without running
+anything, byte for byte as the run wrote it (the CSV keeps every digit).
 Exit status 0, or 2 for a usage or build problem.
 """
 
@@ -83,14 +84,16 @@ def build_parser() -> argparse.ArgumentParser:
                    help="TSPLIB: TENZOR only, no LKH-3 or OR-Tools (their time dominates)")
     p.add_argument("--report", type=Path, metavar="CSV",
                    help="run nothing: print the table and targets of an earlier bench.csv "
-                        "and write its bench.txt, bench.md and bench.svg into --out")
+                        "(and of the tsplib.csv beside it) and write its bench.txt, "
+                        "bench.md, bench.svg (and tsplib.svg) into --out")
     return p
 
 
 def write_outputs(rows: Sequence[dict], out: Path,
                   tsp_rows: Sequence[dict] = ()) -> str:
-    """bench.txt, bench.md and bench.svg of the rows (bench.csv and
-    tsplib.csv are the caller's); returns the text of bench.txt."""
+    """bench.txt, bench.md and bench.svg of the rows, and tsplib.svg of the
+    TSPLIB rows if any (bench.csv and tsplib.csv are the caller's); returns
+    the text of bench.txt."""
     text = report.table(rows) + "\n" + report.targets_text(rows)
     md = report.table(rows, markdown=True)
     if tsp_rows:
@@ -100,6 +103,8 @@ def write_outputs(rows: Sequence[dict], out: Path,
     write_whole(out / "bench.txt", text)
     write_whole(out / "bench.md", md)
     write_whole(out / "bench.svg", report.svg(rows))
+    if tsp_rows:
+        write_whole(out / "tsplib.svg", report.tsplib_svg(tsp_rows))
     return text
 
 
@@ -170,7 +175,8 @@ def main(argv: Sequence[str] | None = None) -> int:
     print()
     print(text, end="")
     print(f"\n{len(rows)} boards in {time.perf_counter() - started:.0f} s; "
-          f"wrote {out / 'bench.csv'}, bench.txt, bench.md, bench.svg")
+          f"wrote {out / 'bench.csv'}, bench.txt, bench.md, bench.svg"
+          + (", tsplib.csv, tsplib.svg" if tsp_rows else ""))
     return 0
 
 

@@ -1,7 +1,9 @@
-"""The benchmark's outputs: CSV, the table, the targets, and an SVG plot.
+"""The benchmark's outputs: CSV, the table, the targets, and SVG plots.
 
-The SVG is written by hand (no plotting library): four small log-scale
-charts of the CSV's figures against the board size.
+The SVG is written by hand (no plotting library, so the same figures give
+the same bytes): four small log-scale charts of the boards' figures against
+the board size (``bench.svg``), and two of the TSPLIB instances, the tours
+over the optimum and TENZOR's time over LKH-3's (``tsplib.svg``).
 """
 
 from __future__ import annotations
@@ -67,11 +69,14 @@ TARGET_VERIFY_MB_100K = 2048.0
 
 
 def _fmt(value: object) -> str:
-    """A CSV field: six significant digits for a float, blank for none."""
+    """A CSV field: a float as the shortest text that reads back as the same
+    float, so that ``--report`` prints what the run printed and gives the
+    same verdicts (with six digits, a re-print once gave LKH-3's 108.54 s
+    on pcb3038 as 108.55); blank for none."""
     if value is None or value == "":
         return ""
     if isinstance(value, float):
-        return "" if math.isnan(value) else format(value, ".6g")
+        return "" if math.isnan(value) else repr(float(value))
     return str(value)
 
 
@@ -308,13 +313,35 @@ def _esc(text: str) -> str:
     return text.replace("&", "&amp;").replace("<", "&lt;").replace(">", "&gt;")
 
 
+def _marker(cx: float, cy: float, colour: str, marker: str) -> str:
+    """A point's mark: ``circle`` and ``diamond`` filled, ``square`` and
+    ``ring`` open."""
+    if marker == "circle":
+        return f'<circle cx="{cx:.1f}" cy="{cy:.1f}" r="3" fill="{colour}"/>'
+    if marker == "ring":
+        return (f'<circle cx="{cx:.1f}" cy="{cy:.1f}" r="3.5" fill="white" '
+                f'stroke="{colour}" stroke-width="1.5"/>')
+    if marker == "diamond":
+        return (f'<path d="M{cx:.1f},{cy - 4.5:.1f} L{cx + 4.5:.1f},{cy:.1f} '
+                f'L{cx:.1f},{cy + 4.5:.1f} L{cx - 4.5:.1f},{cy:.1f} Z" fill="{colour}"/>')
+    return (f'<rect x="{cx - 3:.1f}" y="{cy - 3:.1f}" width="6" height="6" '
+            f'fill="white" stroke="{colour}"/>')
+
+
 class _Chart:
-    """One log-x chart in a box of the SVG."""
+    """One chart in a box of the SVG: log-x by the numbers ``xs`` (board
+    sizes), or, given ``labels``, one column per label (``xs`` then being
+    their places 0, 1, ...)."""
 
     def __init__(self, x: float, y: float, w: float, h: float, title: str,
-                 xs: Sequence[float], ylo: float, yhi: float, ylog: bool, ylabel: str):
+                 xs: Sequence[float], ylo: float, yhi: float, ylog: bool, ylabel: str,
+                 labels: Sequence[str] | None = None, xlabel: str = "pads"):
         self.x, self.y, self.w, self.h = x, y, w, h
-        self.xlo, self.xhi = math.log10(min(xs)) - 0.15, math.log10(max(xs)) + 0.15
+        self.labels = labels
+        if labels is None:
+            self.xlo, self.xhi = math.log10(min(xs)) - 0.15, math.log10(max(xs)) + 0.15
+        else:
+            self.xlo, self.xhi = -0.5, len(labels) - 0.5
         self.ylog = ylog
         self.ylo, self.yhi = (math.log10(ylo), math.log10(yhi)) if ylog else (ylo, yhi)
         self.parts = [f'<text x="{x + w / 2:.1f}" y="{y - 8:.1f}" text-anchor="middle" '
@@ -323,13 +350,15 @@ class _Chart:
                       f'<text x="{x - 42:.1f}" y="{y + h / 2:.1f}" font-size="11" '
                       f'transform="rotate(-90 {x - 42:.1f} {y + h / 2:.1f})" '
                       f'text-anchor="middle">{_esc(ylabel)}</text>']
-        for v in xs:
+        for k, v in enumerate(xs):
             px = self.px(v)
             self.parts.append(f'<line x1="{px:.1f}" y1="{y + h}" x2="{px:.1f}" y2="{y + h + 4}" stroke="#444"/>')
-            self.parts.append(f'<text x="{px:.1f}" y="{y + h + 16}" font-size="10" '
-                              f'text-anchor="middle">{v:,}</text>')
-        self.parts.append(f'<text x="{x + w / 2:.1f}" y="{y + h + 30}" font-size="11" '
-                          'text-anchor="middle">pads</text>')
+            text = f"{v:,}" if labels is None else labels[k]
+            for j, line in enumerate(text.split("\n")):
+                self.parts.append(f'<text x="{px:.1f}" y="{y + h + 16 + 12 * j}" font-size="10" '
+                                  f'text-anchor="middle">{_esc(line)}</text>')
+        self.parts.append(f'<text x="{x + w / 2:.1f}" y="{y + h + (30 if labels is None else 44)}" '
+                          f'font-size="11" text-anchor="middle">{_esc(xlabel)}</text>')
         for t in self._yticks():
             py = self.py(t)
             label = f"{t:g}"
@@ -352,7 +381,8 @@ class _Chart:
         return [first + k * step for k in range(int((self.yhi - first) / step + 1e-9) + 1)]
 
     def px(self, v: float) -> float:
-        return self.x + (math.log10(v) - self.xlo) / (self.xhi - self.xlo) * self.w
+        t = math.log10(v) if self.labels is None else v
+        return self.x + (t - self.xlo) / (self.xhi - self.xlo) * self.w
 
     def py(self, v: float) -> float:
         t = math.log10(max(v, 1e-12)) if self.ylog else v
@@ -360,20 +390,17 @@ class _Chart:
         return self.y + self.h - (t - self.ylo) / (self.yhi - self.ylo) * self.h
 
     def series(self, pts: Sequence[tuple[float, float]], colour: str, dashed: bool = False,
-               marker: str = "circle") -> None:
+               marker: str = "circle", line: bool = True) -> None:
+        """Points, joined by a line if ``line``, each with its mark (:func:`_marker`)."""
         if not pts:
             return
-        path = " ".join(f"{self.px(a):.1f},{self.py(b):.1f}" for a, b in pts)
-        dash = ' stroke-dasharray="4 3"' if dashed else ""
-        self.parts.append(f'<polyline points="{path}" fill="none" stroke="{colour}" '
-                          f'stroke-width="1.5"{dash}/>')
+        if line:
+            path = " ".join(f"{self.px(a):.1f},{self.py(b):.1f}" for a, b in pts)
+            dash = ' stroke-dasharray="4 3"' if dashed else ""
+            self.parts.append(f'<polyline points="{path}" fill="none" stroke="{colour}" '
+                              f'stroke-width="1.5"{dash}/>')
         for a, b in pts:
-            if marker == "circle":
-                self.parts.append(f'<circle cx="{self.px(a):.1f}" cy="{self.py(b):.1f}" r="3" '
-                                  f'fill="{colour}"/>')
-            else:
-                self.parts.append(f'<rect x="{self.px(a) - 3:.1f}" y="{self.py(b) - 3:.1f}" '
-                                  f'width="6" height="6" fill="white" stroke="{colour}"/>')
+            self.parts.append(_marker(self.px(a), self.py(b), colour, marker))
 
     def limit(self, value: float, label: str) -> None:
         py = self.py(value)
@@ -443,6 +470,68 @@ def svg(rows: Sequence[dict]) -> str:
         legend.append(f'<rect x="{lx}" y="{H - 22}" width="12" height="12" fill="{COLOURS[d]}"/>')
         legend.append(f'<text x="{lx + 18}" y="{H - 12}" font-size="12">{d}</text>')
     body = "\n".join(p for c in charts for p in c.parts) + "\n" + "\n".join(legend)
+    return (f'<svg xmlns="http://www.w3.org/2000/svg" width="{W}" height="{H}" '
+            f'viewBox="0 0 {W} {H}" font-family="sans-serif">\n'
+            f'<rect width="{W}" height="{H}" fill="white"/>\n{body}\n</svg>\n')
+
+
+#: The TSPLIB figure's series: (CSV key, legend, colour, marker), drawn in
+#: this order, each a little to the right of the one before in its column.
+TSPLIB_SERIES: tuple[tuple[str, str, str, str], ...] = (
+    ("tenzor_pct", "TENZOR", "#1f77b4", "circle"),
+    ("lkh_pct", "LKH-3, one run", "#444444", "square"),
+    ("ortools1_pct", "OR-Tools, 1 s", "#ff7f0e", "ring"),
+    ("ortools3_pct", "OR-Tools, 3 s", "#d62728", "diamond"),
+)
+
+#: The lowest per cent the figure shows: a tour at the optimum (0 %) is drawn there.
+TSPLIB_PCT_FLOOR = 0.01
+
+
+def tsplib_svg(rows: Sequence[dict]) -> str:
+    """Two charts of the TSPLIB run, one column per instance (by nodes):
+    each tour's per cent over the proven optimum (log scale; 0.01 and less,
+    the optimum itself, on the floor) against the 1 % target, and TENZOR's
+    time over LKH-3's against the hundredth."""
+    rows = sorted(rows, key=lambda r: (int(float(r["nodes"])), r["instance"]))
+    labels = [f"{r['instance']}\n{int(float(r['nodes'])):,}" for r in rows]
+    places = list(range(len(rows)))
+
+    def pts(key: str, shift: float = 0.0) -> list[tuple[float, float]]:
+        return [(k + shift, v) for k, r in enumerate(rows)
+                if (v := _num(r, key)) is not None]
+
+    def decades(vals: Sequence[float], lo: float, hi: float) -> tuple[float, float]:
+        vals = [v for v in vals if v > 0] + [lo, hi]
+        return 10 ** math.floor(math.log10(min(vals))), 10 ** math.ceil(math.log10(max(vals)))
+
+    W, H, cw, ch = 980, 630, 840, 200
+    pcts = [max(v, TSPLIB_PCT_FLOOR) for key, *_ in TSPLIB_SERIES for _, v in pts(key)]
+    lo, hi = decades(pcts, TSPLIB_PCT_FLOOR, 10 * TARGET_TSPLIB_PCT)
+    c1 = _Chart(100, 40, cw, ch, "tour over the proven optimum (0.01 % and less: on the floor)",
+                places, lo, hi, True, "per cent", labels, "TSPLIB instance, nodes")
+    for j, (key, _, colour, marker) in enumerate(TSPLIB_SERIES):
+        c1.series([(a, max(v, TSPLIB_PCT_FLOOR)) for a, v in pts(key, 0.1 * (j - 1.5))],
+                  colour, marker=marker, line=False)
+    c1.limit(TARGET_TSPLIB_PCT, f"target: {TARGET_TSPLIB_PCT:g} %")
+    lo, hi = decades([v for _, v in pts("time_vs_lkh")], TARGET_TSPLIB_TIME_RATIO,
+                     10 * TARGET_TSPLIB_TIME_RATIO)
+    c2 = _Chart(100, 340, cw, ch, "TENZOR's time, deck to tapes, over LKH-3's single run",
+                places, lo, hi, True, "ratio", labels, "TSPLIB instance, nodes")
+    c2.series(pts("time_vs_lkh"), TSPLIB_SERIES[0][2], marker="circle", line=False)
+    for k, r in enumerate(rows):
+        ratio, ours, theirs = (_num(r, key) for key in ("time_vs_lkh", "tenzor_s", "lkh_s"))
+        if None not in (ratio, ours, theirs):
+            c2.parts.append(f'<text x="{c2.px(k):.1f}" y="{c2.py(ratio) + 14:.1f}" '
+                            f'font-size="9" text-anchor="middle">{ours * 1000:.1f} ms / '
+                            f'{theirs:.3g} s</text>')
+    c2.limit(TARGET_TSPLIB_TIME_RATIO, f"target: {TARGET_TSPLIB_TIME_RATIO:g}")
+    legend = []
+    for k, (_, name, colour, marker) in enumerate(TSPLIB_SERIES):
+        legend.append(_marker(106 + k * 170, H - 22, colour, marker))
+        legend.append(f'<text x="{116 + k * 170}" y="{H - 18}" font-size="12">'
+                      f'{_esc(name)}</text>')
+    body = "\n".join(c1.parts + c2.parts + legend)
     return (f'<svg xmlns="http://www.w3.org/2000/svg" width="{W}" height="{H}" '
             f'viewBox="0 0 {W} {H}" font-family="sans-serif">\n'
             f'<rect width="{W}" height="{H}" fill="white"/>\n{body}\n</svg>\n')

@@ -71,6 +71,39 @@ def test_table_plot_and_targets_are_written(quick_run):
     assert (quick_run / "bench.md").read_text(encoding="ascii").startswith("| board |")
 
 
+def test_report_rerenders_a_run_byte_for_byte(tenzor_exe, tmp_path):
+    """``--report`` on a run's CSVs writes the files the run wrote, byte for
+    byte: the CSV keeps every digit of every float (with six, a re-print
+    once gave pcb3038's LKH-3 seconds as 108.55 where the run said 108.54,
+    and a ratio just over a target could have read as on it)."""
+    run, again = tmp_path / "run", tmp_path / "again"
+    status = bench_main.main(["--sizes", "100", "--dists", "uniform,grid", "--repeats", "1",
+                              "--min-seconds", "0", "--lkh-max", "100",
+                              "--tsplib", "d198", "--no-tsplib-refs",
+                              "--tenzor", str(tenzor_exe), "--out", str(run)])
+    assert status == 0
+    assert bench_main.main(["--report", str(run / "bench.csv"), "--out", str(again)]) == 0
+    written = ["bench.txt", "bench.md", "bench.svg", "tsplib.svg"]
+    assert sorted(p.name for p in again.iterdir()) == sorted(written)
+    for name in written:
+        assert (again / name).read_bytes() == (run / name).read_bytes(), name
+
+
+def test_csv_keeps_every_digit(tmp_path):
+    """A float reads back from the CSV as the same float: with six digits,
+    LKH-3's 108.5448 s read back as 108.545 and printed as 108.55, and a
+    ratio of 0.01000004, over the hundredth, as 0.01, on it."""
+    row = {"instance": "pcb3038", "nodes": 3038, "optimum": 137694, "tenzor_pct": 0.4921,
+           "tenzor_s": 1.0854484, "lkh_s": 108.5448, "time_vs_lkh": 0.01000004}
+    report.write_tsplib_csv([row], tmp_path / "tsplib.csv")
+    (back,) = report.read_csv(tmp_path / "tsplib.csv")
+    assert all(float(back[k]) == v for k, v in row.items() if isinstance(v, float))
+    assert report.tsplib_table([back]) == report.tsplib_table([row])
+    assert "108.54" in report.tsplib_table([back])
+    assert report.tsplib_targets_text([back]) == report.tsplib_targets_text([row])
+    assert "MISSED pcb3038 at most 0.01" in report.tsplib_targets_text([back])
+
+
 def test_nearest_neighbour_and_lkh_on_a_square():
     # four corners of a 1 m square and the start point at one corner's side
     items = [tours.Item(p, p) for p in ((100000, 0), (100000, 100000), (0, 100000), (50000, 0))]

@@ -12,6 +12,7 @@ from __future__ import annotations
 import dataclasses
 import math
 import sys
+import xml.etree.ElementTree as ET
 from pathlib import Path
 
 import pytest
@@ -115,3 +116,40 @@ def test_ortools_tours_a_ring():
     pytest.importorskip("ortools.constraint_solver.pywrapcp")
     inst = _ring(12)
     assert tsplib.ortools(inst, 1) == inst.optimum
+
+
+def test_tsplib_figure_puts_each_tour_on_its_side_of_the_targets():
+    """tsplib.svg: one column per instance, by nodes; a TENZOR mark lies
+    below the 1 % line exactly when its tour is within 1 %, and below the
+    hundredth's line exactly when its time is; a tour at the optimum sits
+    on the floor; an empty OR-Tools column draws nothing."""
+    def row(name, nodes, pct, ratio, ort):
+        return {"instance": name, "nodes": str(nodes), "tenzor_pct": str(pct),
+                "tenzor_s": str(ratio * 2.0), "lkh_pct": "0", "lkh_s": "2.0",
+                "time_vs_lkh": str(ratio), "ortools1_pct": ort, "ortools3_pct": ort}
+    rows = [row("b", 500, 1.5, 0.02, "12.5"), row("a", 100, 0.0, 0.005, ""),
+            row("c", 900, 0.99, 0.0099, "30")]
+    ns = "{http://www.w3.org/2000/svg}"
+    root = ET.fromstring(report.tsplib_svg(rows))
+    texts = [t.text for t in root.iter(ns + "text")]
+    assert texts.index("a") < texts.index("b") < texts.index("c")
+    boxes = [(float(r.get("y")), float(r.get("y")) + float(r.get("height")))
+             for r in root.iter(ns + "rect") if r.get("stroke") == "#444"]
+    targets = sorted(float(ln.get("y1")) for ln in root.iter(ns + "line")
+                     if ln.get("stroke-dasharray"))
+    assert len(boxes) == 2 and len(targets) == 2     # the tours' chart, the times'
+
+    def marks(box, **attrs):
+        """(x, y) of the circles inside a chart's box with these attributes."""
+        return sorted((float(c.get("cx")), float(c.get("cy"))) for c in root.iter(ns + "circle")
+                      if all(c.get(k) == v for k, v in attrs.items())
+                      and box[0] <= float(c.get("cy")) <= box[1])
+
+    blue = report.TSPLIB_SERIES[0][2]
+    for box, line in zip(boxes, targets):
+        tenzor = marks(box, fill=blue)
+        assert len(tenzor) == 3
+        # in the order a, b, c; below a line is a larger y on the screen
+        assert [y > line for _, y in tenzor] == [True, False, True]
+    assert marks(boxes[0], fill=blue)[0][1] == boxes[0][1]   # a at 0 %: on the floor
+    assert len(marks(boxes[0], stroke=report.TSPLIB_SERIES[2][2])) == 2   # b and c
