@@ -8,7 +8,8 @@
 #   make release   the build the benchmarks time (fpm's release profile, linked statically
 #                  with link-time optimisation); prints the path of its tenzor
 #   make bench     the benchmarks of docs/PERFORMANCE.md (10 to 20 minutes; BENCH_ARGS=--quick
-#                  for the 100- and 1 000-pad boards): a table, and out/bench/bench.csv, .svg
+#                  for the 100- and 1 000-pad boards): a table, and out/bench/bench.csv, .svg,
+#                  tsplib.csv, tsplib.svg (the recorded run: bench/results/)
 #   make f2c       TENZOR built from legacy/ by f2c, gcc and libf2c: build/f2c/tenzor
 #   make flang     TENZOR built from legacy/ by LLVM flang (installs Debian flang-16,
 #                  about 800 MB): build/flang/tenzor

@@ -312,7 +312,7 @@ def build_parser() -> argparse.ArgumentParser:
     ap.add_argument("--window", type=int, default=40,
                     help="the traced runs' window, in quarters of a failed kick an item "
                          "(default 40: ten kicks an item)")
-    ap.add_argument("--lkh", type=Path, default=ROOT / "bench" / "results" / "tsplib" / "tsplib.csv",
+    ap.add_argument("--lkh", type=Path, default=ROOT / "bench" / "results" / "tsplib.csv",
                     help="a tsplib.csv whose LKH-3 seconds set the budgets")
     ap.add_argument("--out", type=Path, default=Path("out/kicks"),
                     help="decks, tapes and traces (default out/kicks)")

@@ -169,6 +169,21 @@ def test_performance_md_shows_the_recorded_run():
     assert report.table(rows, markdown=True) in doc
 
 
+def test_recorded_run_is_one_run_as_written(tmp_path):
+    """bench/results/ holds one run of ``make bench`` as it wrote it:
+    ``--report`` on its CSVs (as docs/PERFORMANCE.md tells a reader to
+    re-print it) writes its bench.txt, bench.md, bench.svg and tsplib.svg
+    again, byte for byte, and the TSPLIB table in its bench.txt is the one
+    of its tsplib.csv (earlier runs the text cites are in earlier/)."""
+    results = ROOT / "bench" / "results"
+    assert bench_main.main(["--report", str(results / "bench.csv"), "--out", str(tmp_path)]) == 0
+    for name in ("bench.txt", "bench.md", "bench.svg", "tsplib.svg"):
+        assert (tmp_path / name).read_bytes() == (results / name).read_bytes(), name
+    tsp = report.read_csv(results / "tsplib.csv")
+    assert len(tsp) == len(tsplib.NAMES)
+    assert report.tsplib_table(tsp) in (results / "bench.txt").read_text(encoding="ascii")
+
+
 @pytest.mark.skipif(not tours.lkh_available(), reason="elkai (LKH-3) is not installed")
 @pytest.mark.parametrize("dist", ["uniform", "grid"])
 def test_tenzor_tour_is_within_five_percent_of_lkh(dist, run_tenzor):

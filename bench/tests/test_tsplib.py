@@ -19,7 +19,7 @@ import pytest
 
 from bench import measure, report, tsplib
 
-RECORDED = Path(__file__).resolve().parents[1] / "results" / "tsplib" / "tsplib.csv"
+RECORDED = Path(__file__).resolve().parents[1] / "results" / "tsplib.csv"
 
 
 @pytest.mark.parametrize("name", tsplib.NAMES)
@@ -62,7 +62,7 @@ def test_tenzor_tour_is_the_recorded_one(name, tenzor_exe, tmp_path):
     """The tour's search is deterministic: a fixed seed, and bounds that are
     counts, not seconds (docs/RECONSTRUCTION.md, order). So TENZOR's tour
     length on an instance is one number on every machine and with every
-    compiler, and the one in bench/results/tsplib/tsplib.csv, the run
+    compiler, and the one in bench/results/tsplib.csv, the run
     docs/PERFORMANCE.md shows. A change to the search (a move, a candidate,
     a kick, a bound) changes it; the benchmark's run is then made again, and
     its table with it, on purpose. (The check before, d198 within 10 % of
