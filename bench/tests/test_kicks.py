@@ -203,3 +203,13 @@ def test_a_tour_back_from_a_far_start_point_takes_the_least_window(traced: Path,
     assert tr.points[0][2] > 5.0 and tr.points[-1][2] < 1.0
     assert tr.kicks - tr.points[-2][0] == 8 * 160
     assert tr.window(1) == pytest.approx((tr.cpu, tr.points[-1][2]))
+
+
+def test_the_budgets_come_from_the_recorded_run() -> None:
+    """The kicks a hundredth of LKH-3 allows are read from the recorded
+    run's tsplib.csv by default; a default path that named nothing would
+    leave that column empty without a word."""
+    default = kicks.build_parser().parse_args([]).lkh
+    assert default == ROOT / "bench" / "results" / "tsplib.csv"
+    seconds = kicks.lkh_seconds(default)
+    assert sorted(seconds) == sorted(tsplib.NAMES) and min(seconds.values()) > 0
