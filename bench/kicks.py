@@ -7,9 +7,10 @@ itself is not touched), whose ``CMKICK`` also
 
 * takes its seed from the environment variable ``TZSEED`` (default 1977,
   TENZOR's own) and its window, the failed kicks in a row after which the
-  kicks stop, in quarters of a kick an item (at least 160 kicks where
-  TENZOR's is: when the tour comes back from a far start point), from
-  ``TZWIN`` (default 1, TENZOR's own: a quarter of a kick an item);
+  kicks stop, as a multiple of TENZOR's own (a quarter of a kick an item,
+  times the square root of N / 700 on a tape of N items, N over 700; at
+  least 160 kicks where TENZOR's is: when the tour comes back from a far
+  start point), from ``TZWIN`` (default 1, TENZOR's own);
 * on a tape of more than 150 items (on a TSPLIB deck, the small-pad tape:
   the others are empty) appends to the file ``TZTRACE`` names a line when
   the kicks begin, one at each kick kept and one when they stop: the
@@ -23,13 +24,15 @@ in by replacing lines of ``legacy/cmkick.f`` (:data:`PATCH`); if that file
 has changed so that a line is no longer there, the tool says which.
 
 Each instance of ``bench/tsplib/`` is run once with each seed under a long
-window (40 quarters, ten kicks an item, by default), so that every shorter
-window can be read off the same trace: a window of W stops the kicks after
-W * N / 4 kicks in a row that all failed (at least 160 where CMKICK's
-least window applies, which the trace's first line says), and, as CMKICK's
-window grows
+window (40 times TENZOR's own, ten kicks an item on a tape of up to 700
+items, by default), so that every shorter window can be read off the same
+trace: a window of W stops the kicks after W * N / 4 kicks in a row that
+all failed (at least 160 where CMKICK's least window applies, which the
+trace's first line says; times the square root of N / 700 where N is
+over 700), and, as
+CMKICK's window grows
 with what the kept kicks have gained, three times as many more for each per
-cent beyond the first half, up to eight times as many in all (read from the
+cent beyond the first half, up to 8 * W * N / 4 in all (read from the
 trace's lengths, which may put a stop one kick off CMKICK's own sum of
 gains), at a time found from the trace's own cost of a kick. The tour's
 per cent over the proven optimum is that of its TSPLIB length
@@ -39,7 +42,8 @@ with the first seed and with the others, the kicks a budget of a hundredth
 of LKH-3's time allows (LKH-3's seconds read from the recorded TSPLIB run,
 ``--lkh``, as the hour of that run may not be this one's), the cost of a
 kick; then the mean per cent over the optimum after 25 to 400 ms of CPU;
-then, for windows of a quarter to five kicks an item (1 to 20 quarters),
+then, for windows of 1 to 20 times TENZOR's own (a quarter to five kicks
+an item on a tape of up to 700 items),
 the runs within 1 % and the first seed's CPU time to the end of the program
 and per cent.
 
@@ -50,6 +54,7 @@ from __future__ import annotations
 
 import argparse
 import csv
+import math
 import os
 import shutil
 import statistics
@@ -67,7 +72,7 @@ ROOT = Path(__file__).resolve().parents[1]
 SEEDS: tuple[int, ...] = (1977, 12345, 777, 4242, 99, 31337)
 #: Times (ms of CPU) at which the mean per cent is read.
 AT_MS: tuple[int, ...] = (25, 50, 100, 200, 400)
-#: Windows (failed kicks in a row, in quarters of a kick an item) read off
+#: Windows (failed kicks in a row, as multiples of TENZOR's own) read off
 #: each trace.
 WINDOWS: tuple[int, ...] = (1, 2, 4, 8, 20)
 #: Tapes of at most this many items are not traced.
@@ -193,15 +198,19 @@ class Trace:
 
     def window(self, w: int) -> tuple[float, float]:
         """Stopped after ``w`` * items / 4 failed kicks in a row (at least
-        ``least``, as CMKICK counts them), a window that grows after each kept
-        kick by three times itself for each per cent the kicks have taken
-        off beyond the first half, up to eight times itself (CMKICK's
-        rule): (CPU seconds of the
-        whole program, per cent). The trace's own window must be at least
-        ``w``; past its end the run ends as it did."""
+        ``least``, as CMKICK counts them; times the square root of items /
+        700 on a tape of more than 700 items), a window that grows after
+        each kept kick by three times itself for each per cent the kicks
+        have taken off beyond the first half, up to eight times ``w`` *
+        items / 4 (CMKICK's rule): (CPU seconds of the whole program, per
+        cent). The trace's own window must be at least ``w``; past its end
+        the run ends as it did."""
         t0, p0 = self.points[0][1], self.points[0][2]
         last = self.points[0]
         base = max(w * self.items // 4, self.least)
+        cap = 8 * base
+        if self.items > 700:
+            base = int(base * math.sqrt(self.items / 700.0))
         stag = base
         for point in self.points[1:-1] + [(self.kicks + 10**9, 0.0, 0.0)]:
             if point[0] - last[0] > stag:
@@ -211,7 +220,7 @@ class Trace:
             # the per cent of the first tour's length the kicks took off
             gained = 100.0 * (p0 - point[2]) / (100.0 + p0) - 0.5
             if gained > 0.0:
-                stag = min(base + int(3.0 * base * gained), 8 * base)
+                stag = min(base + int(3.0 * base * gained), cap)
         return self.cpu, self.points[-1][2]
 
 
@@ -284,7 +293,8 @@ def report(runs: dict[str, list[Trace]], seeds: list[int], lkh: dict[str, float]
                  + " ms of CPU: " + ", ".join(f"{statistics.mean(tr.at(ms) for tr in every):.2f}"
                                             for ms in AT_MS))
     lines.append("")
-    lines.append("window (quarters of a failed kick an item)")
+    lines.append("window (times TENZOR's own: a quarter of a failed kick an item, "
+                 "times sqrt(N/700) on a tape of N > 700 items)")
     lines.append(f"window  runs within 1 %   seed {seeds[0]}: CPU ms of the program / % "
                  "(* within a hundredth of LKH-3)")
     for w in WINDOWS:
@@ -310,8 +320,8 @@ def build_parser() -> argparse.ArgumentParser:
     ap.add_argument("--seeds", default=",".join(map(str, SEEDS)),
                     help="seeds, the first reported on its own (default the six of the trials)")
     ap.add_argument("--window", type=int, default=40,
-                    help="the traced runs' window, in quarters of a failed kick an item "
-                         "(default 40: ten kicks an item)")
+                    help="the traced runs' window, as a multiple of TENZOR's own (default 40: "
+                         "ten kicks an item on a tape of up to 700 items)")
     ap.add_argument("--lkh", type=Path, default=ROOT / "bench" / "results" / "tsplib.csv",
                     help="a tsplib.csv whose LKH-3 seconds set the budgets")
     ap.add_argument("--out", type=Path, default=Path("out/kicks"),

@@ -167,7 +167,7 @@ MUTANTS = [
     Mutant("legacy/cmkick.f", "NSTAG = MIN(NBASE + INT(3.0D0 *", "NSTAG = MIN(NBASE + INT(2.0D0 *",
            "the kicks' window grows by half a kick an item for each per cent gained, "
            "not three quarters"),
-    Mutant("legacy/cmkick.f", "DBLE(NBASE) * GPCT), 8 * NBASE)", "DBLE(NBASE) * GPCT), 16 * NBASE)",
+    Mutant("legacy/cmkick.f", "      NCAP = 8 * NBASE", "      NCAP = 16 * NBASE",
            "the kicks' window grows up to four kicks an item, not two"),
     Mutant("legacy/cmkick.f", "     1   NLEAST = 160", "     1   NLEAST = 100",
            "the kicks' least window is 100 failed kicks, not 160"),
@@ -188,6 +188,11 @@ MUTANTS = [
            "               D51 = G4 + 1.0D-6",
            "the chain's bound on t5-t1 leaves out the move of t5, and passes by t5 "
            "whose step could close shorter"),
+    # the kicks' window that grows with the tape beyond 700 items (caught by
+    # pcb1173's recorded tour and the window's own test)
+    Mutant("legacy/cmkick.f", "IF (MODE .EQ. 2 .AND. NITM .GT. 700)",
+           "IF (MODE .EQ. 2 .AND. NITM .GT. 1200)",
+           "the kicks' window grows with the tape only beyond 1200 items, not 700"),
 ]
 
 TESTS = ["python", "-m", "pytest", "-q", "-x", "--tb=no", "-rf", "-p", "no:cacheprovider", "-m",

@@ -107,6 +107,20 @@ def test_the_window_grows_with_what_the_kicks_gain() -> None:
     assert big.window(4) == pytest.approx((0.010 + 805e-5 + 0.003, 0.88))
 
 
+def test_a_larger_tape_waits_longer() -> None:
+    # 1 400 items, window 1: a quarter of a kick an item, 350, times the
+    # square root of 1400/700: 494 failed kicks. Kick 400 is kept, kick 850
+    # comes 450 after it, and the kicks stop 494 after that, at 1 344 (0.001
+    # ms a kick; a window of 350 would have stopped them at kick 350)
+    tr = kicks.Trace(1400, [(0, 0.010, 2.0), (400, 0.011, 1.9), (850, 0.015, 1.8),
+                            (10000, 0.020, 1.8)], 0.023, 1)
+    assert tr.window(1) == pytest.approx((0.010 + 1344e-6 + 0.003, 1.8))
+    # the growth with the gain still stops at two kicks an item, 2 800
+    big = kicks.Trace(1400, [(0, 0.010, 9.0), (10, 0.011, 0.9), (10000, 0.020, 0.9)],
+                      0.023, 1)
+    assert big.window(1) == pytest.approx((0.010 + 2810e-6 + 0.003, 0.9))
+
+
 def test_lengths_are_scaled_to_the_tapes_per_cent(tmp_path: Path) -> None:
     f = tmp_path / "x.trc"
     f.write_text("  0  1.0E-02  1100.0\n  7  1.2E-02  1050.0\n  -9  1.5E-02  1020.0\n")
@@ -152,6 +166,21 @@ def test_the_traced_copy_searches_as_tenzor_does(traced: Path, tmp_path: Path) -
     assert tr.window(40)[1] == pytest.approx(pcts[-1])
 
 
+def test_window_one_read_off_a_trace_is_tenzors_own_stop(traced: Path, tmp_path: Path) -> None:
+    """pcb1173 (1 173 items, over the 700 beyond which the window grows with
+    the tape): the stop that TENZOR's own window (1) puts on a long trace
+    comes after the kick that TENZOR's own run kept last. (A trace's per
+    cents are its lengths scaled to its own end, so two traces are compared
+    by their kicks.)"""
+    own = kicks.run_traced(traced, "pcb1173", 1977, 1, tmp_path)
+    last_kept = own.points[-2][0]
+    assert last_kept > 0
+    long = kicks.run_traced(traced, "pcb1173", 1977, 40, tmp_path)
+    pct = {k: p for k, _, p in long.points}
+    assert long.window(1)[1] == pct[last_kept]
+    assert long.points[-2][0] > last_kept    # the long window goes on to keep more
+
+
 @pytest.mark.parametrize("argv, says", [
     (["--names", "x"], "--names 'x': the instances are of bench/tsplib/: d198"),
     (["--seeds", "a,b"], "--seeds 'a,b': give whole numbers"),
@@ -171,19 +200,24 @@ def test_the_report_names_a_run_that_never_came_within_1_per_cent() -> None:
 
 
 @pytest.mark.tenzor            # it runs a TENZOR (the traced copy): mutation runs select it
-@pytest.mark.parametrize("name, window", [("d657", 657 // 4), ("fl1400", 2 * 1400)])
+@pytest.mark.parametrize("name, window", [("d657", 657 // 4),
+                                          ("pcb1173", int(1173 // 4 * (1173 / 700) ** 0.5)),
+                                          ("fl1400", 2 * 1400)])
 def test_the_kicks_stop_where_their_window_says(traced: Path, tmp_path: Path, name: str,
                                                  window: int) -> None:
     """CMKICK's window, read off a traced run with the fixed seed: the kicks
     stop when the window's failed kicks in a row follow the last kept one.
     d657's kicks take off 0.29 % of its first tour, less than half a per
-    cent, so its window stays a quarter of a kick an item; fl1400's take off
-    8 %, far past what grows the window to its cap, two kicks an item.
-    Neither tour comes back from a far start point (no least window)."""
+    cent, so its window stays a quarter of a kick an item; pcb1173's take
+    off less too, but its tape has more than 700 items, so its window is a
+    quarter of a kick an item times the square root of 1173/700, 379 kicks;
+    fl1400's take off 8 %, far past what grows the window to its cap, two
+    kicks an item. None of the tours comes back from a far start point (no
+    least window)."""
     tr = kicks.run_traced(traced, name, 1977, 1, tmp_path)
     p0, last = tr.points[0][2], tr.points[-2][2]
     gained = 100 * (p0 - last) / (100 + p0)
-    assert (gained < 0.5) == (name == "d657"), gained
+    assert (gained < 0.5) == (name != "fl1400"), gained
     assert tr.least == 1
     assert tr.kicks - tr.points[-2][0] == window
 
