@@ -7,7 +7,7 @@
 #   make examples  punch every deck of examples/ into out/ (docs/TOOLS.md's examples)
 #   make release   the build the benchmarks time (fpm's release profile, linked statically
 #                  with link-time optimisation); prints the path of its tenzor
-#   make bench     the benchmarks of docs/PERFORMANCE.md (10 to 20 minutes; BENCH_ARGS=--quick
+#   make bench     the benchmarks of docs/PERFORMANCE.md (8 to 20 minutes; BENCH_ARGS=--quick
 #                  for the 100- and 1 000-pad boards): a table, and out/bench/bench.csv, .svg,
 #                  tsplib.csv, tsplib.svg (the recorded run: bench/results/)
 #   make f2c       TENZOR built from legacy/ by f2c, gcc and libf2c: build/f2c/tenzor
