@@ -97,9 +97,11 @@ PATCH: tuple[tuple[str, str], ...] = (
      "      ITRC = 0\n"
      "      CALL GETENV('TZTRACE', ENVV)\n"
      f"      IF (ENVV .NE. ' ' .AND. NITM .GT. {TRACE_ABOVE}) ITRC = 1\n"),
-    ("      IF (MODE .EQ. 2) NBASE = MAX(NITM / 4, NLEAST)\n      NSTAG = NBASE\n",
-     "      IF (MODE .EQ. 2) NBASE = MAX(NWIN * NITM / 4, NLEAST)\n"
+    ("      IF (MODE .EQ. 2) NBASE = MAX(NITM / 4, NLEAST)\n",
+     "      IF (MODE .EQ. 2) NBASE = MAX(NWIN * NITM / 4, NLEAST)\n"),
+    ("      NSTAG = NBASE\n      GKEPT = 0.0D0\n",
      "      NSTAG = NBASE\n"
+     "      GKEPT = 0.0D0\n"
      "      IF (ITRC .EQ. 1) THEN\n"
      "         OPEN (77, FILE=ENVV, STATUS='UNKNOWN', POSITION='APPEND')\n"
      "         CALL CPU_TIME(TCPU)\n"
