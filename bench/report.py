@@ -313,6 +313,12 @@ def _esc(text: str) -> str:
     return text.replace("&", "&amp;").replace("<", "&lt;").replace(">", "&gt;")
 
 
+def _decades(values: Sequence[float]) -> tuple[float, float]:
+    """The whole decades around the positive ``values``, for a log axis."""
+    return (10 ** math.floor(math.log10(min(values))),
+            10 ** math.ceil(math.log10(max(values))))
+
+
 def _marker(cx: float, cy: float, colour: str, marker: str) -> str:
     """A point's mark: ``circle`` and ``diamond`` filled, ``square`` and
     ``ring`` open."""
@@ -427,9 +433,9 @@ def svg(rows: Sequence[dict]) -> str:
 
     def span(keys: Sequence[str], lo: float, hi: float, log: bool) -> tuple[float, float]:
         vals = [v for d in dists for k in keys for _, v in pts(d, k)] + [lo, hi]
-        a, b = min(vals), max(vals)
         if log:
-            return 10 ** math.floor(math.log10(a)), 10 ** math.ceil(math.log10(b))
+            return _decades(vals)
+        a, b = min(vals), max(vals)
         pad = (b - a) * 0.08 or 0.05
         return a - pad, b + pad
 
@@ -501,21 +507,17 @@ def tsplib_svg(rows: Sequence[dict]) -> str:
         return [(k + shift, v) for k, r in enumerate(rows)
                 if (v := _num(r, key)) is not None]
 
-    def decades(vals: Sequence[float], lo: float, hi: float) -> tuple[float, float]:
-        vals = [v for v in vals if v > 0] + [lo, hi]
-        return 10 ** math.floor(math.log10(min(vals))), 10 ** math.ceil(math.log10(max(vals)))
-
     W, H, cw, ch = 980, 630, 840, 200
     pcts = [max(v, TSPLIB_PCT_FLOOR) for key, *_ in TSPLIB_SERIES for _, v in pts(key)]
-    lo, hi = decades(pcts, TSPLIB_PCT_FLOOR, 10 * TARGET_TSPLIB_PCT)
+    lo, hi = _decades(pcts + [TSPLIB_PCT_FLOOR, 10 * TARGET_TSPLIB_PCT])
     c1 = _Chart(100, 40, cw, ch, "tour over the proven optimum (0.01 % and less: on the floor)",
                 places, lo, hi, True, "per cent", labels, "TSPLIB instance, nodes")
     for j, (key, _, colour, marker) in enumerate(TSPLIB_SERIES):
         c1.series([(a, max(v, TSPLIB_PCT_FLOOR)) for a, v in pts(key, 0.1 * (j - 1.5))],
                   colour, marker=marker, line=False)
     c1.limit(TARGET_TSPLIB_PCT, f"target: {TARGET_TSPLIB_PCT:g} %")
-    lo, hi = decades([v for _, v in pts("time_vs_lkh")], TARGET_TSPLIB_TIME_RATIO,
-                     10 * TARGET_TSPLIB_TIME_RATIO)
+    lo, hi = _decades([v for _, v in pts("time_vs_lkh") if v > 0]
+                      + [TARGET_TSPLIB_TIME_RATIO, 10 * TARGET_TSPLIB_TIME_RATIO])
     c2 = _Chart(100, 340, cw, ch, "TENZOR's time, deck to tapes, over LKH-3's single run",
                 places, lo, hi, True, "ratio", labels, "TSPLIB instance, nodes")
     c2.series(pts("time_vs_lkh"), TSPLIB_SERIES[0][2], marker="circle", line=False)
