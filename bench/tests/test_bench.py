@@ -73,9 +73,9 @@ def test_table_plot_and_targets_are_written(quick_run):
 
 def test_report_rerenders_a_run_byte_for_byte(tenzor_exe, tmp_path):
     """``--report`` on a run's CSVs writes the files the run wrote, byte for
-    byte: the CSV keeps every digit of every float (with six, a re-print
-    once gave pcb3038's LKH-3 seconds as 108.55 where the run said 108.54,
-    and a ratio just over a target could have read as on it)."""
+    byte, tsplib.svg among them. (Whether a float keeps its digits is
+    test_csv_keeps_every_digit's: on so short a run six digits happen to
+    print the same.)"""
     run, again = tmp_path / "run", tmp_path / "again"
     status = bench_main.main(["--sizes", "100", "--dists", "uniform,grid", "--repeats", "1",
                               "--min-seconds", "0", "--lkh-max", "100",
