@@ -13,6 +13,8 @@
 #   make f2c       TENZOR built from legacy/ by f2c, gcc and libf2c: build/f2c/tenzor
 #   make flang     TENZOR built from legacy/ by LLVM flang (installs Debian flang-16,
 #                  about 800 MB): build/flang/tenzor
+#   make rs274     install LinuxCNC's rs274 interpreter (Debian linuxcnc-uspace), which
+#                  make test then runs on em703's G-code
 # and, for CI (.ci/run):
 #   make test-checks   the Fortran tests and every test that runs tenzor or em703,
 #                      again, on a build with gfortran's run-time checks (but the
@@ -40,7 +42,7 @@ CHECKS := -fcheck=all -ffpe-trap=invalid,zero,overflow -ftrapv
 # The built program is run directly: `fpm run` would add its own progress lines.
 TENZOR = "$$(fpm run --runner echo tenzor 2>/dev/null | tail -n 1)"
 
-.PHONY: release demo examples test test-checks test-cpus fuzz mutants bench setup build f2c flang
+.PHONY: release demo examples test test-checks test-cpus fuzz mutants bench setup build f2c flang rs274
 
 setup:
 	@bash scripts/setup.sh
@@ -106,6 +108,12 @@ f2c: setup
 flang: setup
 	@WITH_FLANG=1 bash scripts/setup.sh
 	@bash scripts/judges.sh flang
+
+# LinuxCNC's G-code interpreter, the outside reader of em703's G-code
+# (harness/tests/em703/test_em703_gcode.py).
+rs274: setup
+	@WITH_RS274=1 bash scripts/setup.sh
+	@command -v rs274
 
 # The release build: fpm's release profile, linked statically (no dynamic loader at
 # start-up) with link-time optimisation. The same flags as bench/measure.py's

@@ -13,8 +13,9 @@
 #   - .venv/ holds fpm and the Python packages of requirements.txt (exact pins),
 #     and the project of pyproject.toml installed editable: `python -m harness`,
 #     `python -m seeds`, `python -m bench` and `dxf2deck` then work anywhere.
-# LinuxCNC's rs274 interpreter (Debian package linuxcnc-uspace) is optional and
-# large: the G-code cross-check runs when it is installed (see README.md).
+#   - with WITH_RS274=1 (`make rs274`, CI), linuxcnc-uspace (Debian, about
+#     115 packages with Tcl/Tk) brings LinuxCNC's rs274 interpreter, which
+#     reads em703's G-code in a cross-check; elsewhere that check is skipped.
 # Called by `make demo` and `make test`; safe to run again at any time.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -30,6 +31,9 @@ command -v chromedriver >/dev/null 2>&1 || apt_packages+=(chromium-driver)
 command -v gcc >/dev/null 2>&1 || apt_packages+=(gcc)
 if [ "${WITH_FLANG:-0}" = 1 ]; then
     command -v flang-new-16 >/dev/null 2>&1 || apt_packages+=(flang-16)
+fi
+if [ "${WITH_RS274:-0}" = 1 ]; then
+    command -v rs274 >/dev/null 2>&1 || apt_packages+=(linuxcnc-uspace)
 fi
 python3 -c 'import venv, ensurepip' >/dev/null 2>&1 || apt_packages+=(python3-venv)
 
