@@ -35,9 +35,13 @@ BENCH_ARGS ?=
 
 # gfortran's run-time checks: bounds, array temporaries, DO variables, pointers,
 # recursion, bits (-fcheck=all); a trap on a floating-point invalid operation,
-# division by zero or overflow; a trap on signed integer overflow (-ftrapv).
-# fpm adds them to its debug profile and builds into a directory of their own.
-CHECKS := -fcheck=all -ffpe-trap=invalid,zero,overflow -ftrapv
+# division by zero or overflow; a trap on signed integer overflow (GCC's
+# undefined-behaviour sanitiser, checked in line: -ftrapv, which calls libgcc for
+# every integer operation, made the checked build twice as slow). fpm adds them
+# to its debug profile and builds into a directory of their own;
+# harness/tests/legacy/test_run_time_checks.py checks that each one trips.
+CHECKS := -fcheck=all -ffpe-trap=invalid,zero,overflow \
+          -fsanitize=signed-integer-overflow -fsanitize-undefined-trap-on-error
 
 # The built program is run directly: `fpm run` would add its own progress lines.
 TENZOR = "$$(fpm run --runner echo tenzor 2>/dev/null | tail -n 1)"

@@ -27,8 +27,8 @@ TOLERANCE = 5                                   # 0.05 mm, the machine's accurac
 #: Fortran run-time library's error reports and the signals of a crash
 #: (the fuzz suites check both streams for these).
 FORBIDDEN = ("Fortran runtime", "Backtrace", "Error termination", "Program received signal",
-             "SIGSEGV", "SIGFPE", "SIGABRT", "SIGBUS", "Segmentation fault", "core dumped",
-             "Aborted")
+             "SIGSEGV", "SIGFPE", "SIGABRT", "SIGBUS", "SIGILL", "Segmentation fault",
+             "core dumped", "Aborted", "Illegal instruction")
 
 
 @dataclass(frozen=True)
