@@ -14,13 +14,12 @@ from __future__ import annotations
 import math
 import re
 import subprocess
-import sys
 import warnings
 from pathlib import Path
 
 import pytest
 
-from seeds.tests.test_gerber_roundtrip import BOARDS, realboards
+from seeds.tests.test_gerber_roundtrip import BOARDS, board_run, realboards
 
 
 def holes_of(path: Path) -> list[tuple[float, float, float]]:
@@ -40,21 +39,14 @@ def holes_of(path: Path) -> list[tuple[float, float, float]]:
 
 
 @pytest.mark.parametrize("board", BOARDS, ids=[b[0] for b in BOARDS])
-def test_em703_drill_gives_back_the_boards_holes(board, tenzor_exe, em703_exe, tmp_path):
+def test_em703_drill_gives_back_the_boards_holes(board, tenzor_exe, em703_exe, tmp_path,
+                                                 tmp_path_factory):
     folder = realboards() / board[0]
-    deck = tmp_path / "board.crd"
-    proc = subprocess.run([sys.executable, "-m", "seeds", "gerber2deck", str(folder / board[1]),
-                           "--drill", str(folder / board[2]), "-o", str(deck)],
-                          capture_output=True, text=True, timeout=300)
-    assert proc.returncode == 0, proc.stderr
-    m = re.search(r"start point at board (\S+), (\S+) mm", proc.stderr)
-    assert m, proc.stderr
+    run = board_run(board, tenzor_exe, tmp_path_factory)
+    m = re.search(r"start point at board (\S+), (\S+) mm", run.said)
+    assert m, run.said
     ox, oy = (float(v.rstrip(",;")) for v in m.groups())
-    out = tmp_path / "tapes"
-    tz = subprocess.run([str(tenzor_exe), str(deck), "-o", str(out)], capture_output=True,
-                        timeout=300)
-    assert tz.returncode == 0, tz.stderr.decode("latin-1")
-    job = next(out.glob("*-DRILL.job"))
+    job = next(run.tapes.glob("*-DRILL.job"))
     drl = tmp_path / "tour.drl"
     em = subprocess.run([str(em703_exe), "drill", str(job), "-o", str(drl)], capture_output=True,
                         timeout=300)
