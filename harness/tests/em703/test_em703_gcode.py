@@ -28,13 +28,20 @@ from harness.tape import Frame, decode, encode
 from harness.tests.helpers import keys, run
 from harness.tests.strategies import frame_lists
 
-RS274 = shutil.which("rs274")
-REQUIRE_RS274 = os.environ.get("REQUIRE_RS274") == "1"
-needs_rs274 = pytest.mark.skipif(
-    RS274 is None and not REQUIRE_RS274,
-    reason="rs274 (LinuxCNC's standalone G-code interpreter, Debian package "
-           "linuxcnc-uspace) is not on PATH: the G-code is checked by the "
-           "harness's own reader only; `make rs274` installs it")
+
+@pytest.fixture(scope="session")
+def rs274() -> str:
+    """The path of rs274; without it a skip, or a failure under REQUIRE_RS274=1."""
+    path = shutil.which("rs274")
+    if path is None:
+        why = ("rs274 (LinuxCNC's standalone G-code interpreter, Debian package "
+               "linuxcnc-uspace) is not on PATH: `make rs274` installs it")
+        if os.environ.get("REQUIRE_RS274") == "1":
+            pytest.fail(why + "; REQUIRE_RS274=1 says its cross-check must run", pytrace=False)
+        pytest.skip(why + "; the G-code is checked by the harness's own reader only")
+    return path
+
+
 MM = 0.01
 Event = tuple
 
@@ -173,11 +180,8 @@ CANON = re.compile(r"(STRAIGHT_TRAVERSE|STRAIGHT_FEED|ARC_FEED|START_SPINDLE_CLO
                    r"STOP_SPINDLE_TURNING)\(([^)]*)\)")
 
 
-def rs274_events(program: Path) -> list[Event]:
-    if RS274 is None:   # only under REQUIRE_RS274=1: needs_rs274 skips otherwise
-        pytest.fail("rs274 is not on PATH, and REQUIRE_RS274=1 says its cross-check must "
-                    "run: `make rs274` installs it (Debian linuxcnc-uspace)", pytrace=False)
-    proc = subprocess.run([RS274, "-g", str(program)], capture_output=True, text=True,
+def rs274_events(rs274: str, program: Path) -> list[Event]:
+    proc = subprocess.run([rs274, "-g", str(program)], capture_output=True, text=True,
                           timeout=120, stdin=subprocess.DEVNULL)
     assert proc.returncode == 0, proc.stdout[-1500:] + proc.stderr[-1500:]
     events: list[Event] = []
@@ -222,15 +226,14 @@ def test_example_tapes_trace_the_harness_path(em703_exe, example_tapes) -> None:
         assert_same_path(read_gcode(zed), want, f"{tape} --z")
 
 
-@needs_rs274
-def test_rs274_traces_the_harness_path_of_every_example_tape(em703_exe, example_tapes,
+def test_rs274_traces_the_harness_path_of_every_example_tape(em703_exe, rs274, example_tapes,
                                                              tmp_path) -> None:
     program = tmp_path / "t.ngc"
     for tape in example_tapes:
         want = _normalise(expected_events(decode(tape.read_bytes()).frames))
         for extra in ([], ["--z"]):
             run(em703_exe, "gcode", tape, *extra, "-o", program, check=0)
-            assert_same_path(rs274_events(program), want, f"{tape} {extra} (rs274)")
+            assert_same_path(rs274_events(rs274, program), want, f"{tape} {extra} (rs274)")
 
 
 def test_example_jobs_trace_the_harness_path(em703_exe, example_jobs, tmp_path) -> None:
@@ -257,29 +260,27 @@ def test_random_tapes_trace_the_harness_path(em703_exe, tmp_path_factory, frames
     assert_same_path(read_gcode(text), want, "random tape")
 
 
-@needs_rs274
-def test_rs274_traces_the_harness_path_of_every_example_job(em703_exe, example_jobs,
+def test_rs274_traces_the_harness_path_of_every_example_job(em703_exe, rs274, example_jobs,
                                                             tmp_path) -> None:
     out = tmp_path / "job.ngc"
     for job in example_jobs:
         want, _ = job_events(job)
         for extra in ([], ["--z"]):
             run(em703_exe, "gcode", job, *extra, "-o", out, check=0)
-            assert_same_path(rs274_events(out), want, f"{job} {extra} (rs274)")
+            assert_same_path(rs274_events(rs274, out), want, f"{job} {extra} (rs274)")
         run(em703_exe, "gcode", job, "--chords", "0.01", "-o", out, check=0)
-        assert all(e[0] != "arc" for e in rs274_events(out))
+        assert all(e[0] != "arc" for e in rs274_events(rs274, out))
 
 
-@needs_rs274
 @settings(max_examples=20, deadline=None)
 @given(frames=frame_lists(), use_z=st.booleans())
-def test_rs274_traces_the_harness_path_of_random_tapes(em703_exe, tmp_path_factory, frames,
-                                                       use_z) -> None:
+def test_rs274_traces_the_harness_path_of_random_tapes(em703_exe, rs274, tmp_path_factory,
+                                                       frames, use_z) -> None:
     tmp = tmp_path_factory.mktemp("rs274")
     tape, program = tmp / "t.ptp", tmp / "t.ngc"
     tape.write_bytes(encode(frames))
     run(em703_exe, "gcode", tape, *(["--z"] if use_z else []), "-o", program, check=0)
-    assert_same_path(rs274_events(program), _normalise(expected_events(frames)),
+    assert_same_path(rs274_events(rs274, program), _normalise(expected_events(frames)),
                      "random tape (rs274)")
 
 
