@@ -109,13 +109,16 @@ test-cpus: build
 f2c: setup
 	@bash scripts/judges.sh f2c
 
-flang: setup
+# (setup.sh with WITH_FLANG=1, or WITH_RS274=1 below, does the whole set-up and
+# adds its package; a `setup` prerequisite would run it twice, and on a fresh
+# machine apt-get update twice.)
+flang:
 	@WITH_FLANG=1 bash scripts/setup.sh
 	@bash scripts/judges.sh flang
 
 # LinuxCNC's G-code interpreter, the outside reader of em703's G-code
 # (harness/tests/em703/test_em703_gcode.py).
-rs274: setup
+rs274:
 	@WITH_RS274=1 bash scripts/setup.sh
 	@command -v rs274
 
