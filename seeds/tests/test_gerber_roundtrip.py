@@ -70,9 +70,8 @@ def gerber2deck(*args: str) -> subprocess.CompletedProcess:
 
 @dataclass(frozen=True)
 class BoardRun:
-    """gerber2deck and tenzor run on one real board: the deck, what gerber2deck
-    said about it, how long it took, and tenzor's output folder."""
-    deck: Path
+    """gerber2deck and tenzor run on one real board: what gerber2deck said
+    about it, how long it took, and tenzor's output folder."""
     said: str
     seconds: float
     tapes: Path
@@ -83,8 +82,8 @@ _RUNS: dict[tuple[str, str], BoardRun] = {}
 
 def board_run(board, tenzor: Path, tmp_path_factory: pytest.TempPathFactory) -> BoardRun:
     """The board's copper layer and drill file through gerber2deck and tenzor,
-    once a run: the round trip here and test_gerber_drill.py read the same
-    tapes (the two runs were the same, and tenzor on a real board is seconds)."""
+    once a run and tenzor: the round trip here and test_gerber_drill.py read
+    the same tapes (gerber2deck and tenzor take seconds on a real board)."""
     key = (board[0], str(tenzor))
     if key not in _RUNS:
         folder = realboards() / board[0]
@@ -98,7 +97,7 @@ def board_run(board, tenzor: Path, tmp_path_factory: pytest.TempPathFactory) -> 
         tz = subprocess.run([str(tenzor), str(deck), "-o", str(out)], capture_output=True,
                             timeout=300)
         assert tz.returncode == 0, tz.stderr.decode("latin-1")
-        _RUNS[key] = BoardRun(deck, proc.stderr, seconds, out)
+        _RUNS[key] = BoardRun(proc.stderr, seconds, out)
     return _RUNS[key]
 
 
