@@ -256,9 +256,11 @@ def _polyline_item(e: Any, verts: list[tuple[Point, float]], closed: bool,
 @dataclass
 class _Budget:
     """The reading's state: entities left to expand (ENTITY_BUDGET at the
-    start), the tolerance splines are flattened within and how many were."""
+    start, read when the reading starts, so that the limit and the message
+    that names it are one number), the tolerance splines are flattened
+    within and how many were."""
 
-    left: int = ENTITY_BUDGET
+    left: int = field(default_factory=lambda: ENTITY_BUDGET)
     tol: float = SPLINE_TOL
     splines: int = 0
 

@@ -88,8 +88,18 @@ def test_a_block_that_inserts_itself_is_reported(tmp_path, capsys):
 
 
 def test_nested_inserts_past_the_budget_are_refused(tmp_path, capsys, monkeypatch):
-    """2^24 circles in a few kilobytes; the budget stops the expansion."""
+    """2^24 circles in a few kilobytes; the budget stops the expansion, at
+    the budget the message names (the budget is read when a reading starts)."""
     monkeypatch.setattr(seed001, "ENTITY_BUDGET", 5000)
+    read = 0
+    entity_items_of = seed001._entity_items_of
+
+    def counted(*args, **kwargs):
+        nonlocal read
+        read += 1
+        return entity_items_of(*args, **kwargs)
+
+    monkeypatch.setattr(seed001, "_entity_items_of", counted)
     doc, msp = _doc()
     doc.blocks.new("B0").add_circle((0, 0), 0.5)
     for k in range(1, 25):
@@ -102,6 +112,7 @@ def test_nested_inserts_past_the_budget_are_refused(tmp_path, capsys, monkeypatc
     assert err.strip().endswith("the drawing expands to more than 5000 entities (blocks "
                                 "inserted into blocks); split it, or explode fewer blocks")
     assert deck == ""                          # nothing written
+    assert read == 5000                        # the 5001st entity is refused unread
 
 
 @pytest.mark.parametrize("corners", [
