@@ -57,7 +57,7 @@ contains
         character(len=*), intent(in), optional :: job_path
         type(error_t), allocatable :: err
         character(len=:), allocatable :: bytes
-        call read_tape(path, bytes, status)
+        call read_input(path, bytes, status)
         if (status /= EXIT_OK) return
         if (present(layer)) then
             if ((layer%bytes >= 0 .and. layer%bytes /= len(bytes)) .or. &
@@ -78,8 +78,9 @@ contains
         end if
     end subroutine load_run
 
-    !> Read a tape image whole (a byte a row); status 0 or 2 (cannot read).
-    subroutine read_tape(path, bytes, status)
+    !> Read an input whole (a tape image: a byte a row; or a text to
+    !> punch); status 0, or 2 (cannot read: the message is said).
+    subroutine read_input(path, bytes, status)
         character(len=*), intent(in) :: path
         character(len=:), allocatable, intent(out) :: bytes
         integer, intent(out) :: status
@@ -92,7 +93,7 @@ contains
             return
         end if
         call remember_input(path)
-    end subroutine read_tape
+    end subroutine read_input
 
     !> Open an output: the file path, written whole or not at all (a fresh
     !> temporary file, renamed by close_output), or standard output when
@@ -224,7 +225,7 @@ contains
         type(text_t) :: text
         logical :: got
         integer :: n
-        call read_tape(path, bytes, status)
+        call read_input(path, bytes, status)
         if (status /= EXIT_OK) return
         call decoder_start(dec, bytes, code, err)
         do while (.not. allocated(err))
@@ -534,13 +535,8 @@ contains
         type(error_t), allocatable :: err
         integer :: k
         status = EXIT_OK
-        call read_text(path, text, err)
-        if (allocated(err)) then
-            call say(error_text(err))
-            status = EXIT_USAGE
-            return
-        end if
-        call remember_input(path)
+        call read_input(path, text, status)
+        if (status /= EXIT_OK) return
         call punch_text(text, code, rows, err)
         if (allocated(err)) then
             err%file = path
@@ -570,7 +566,7 @@ contains
         character(len=:), allocatable :: bytes, c, tmp
         type(error_t), allocatable :: err
         type(text_t) :: text
-        call read_tape(path, bytes, status)
+        call read_input(path, bytes, status)
         if (status /= EXIT_OK) return
         c = code
         if (c == 'auto') c = guess_code(bytes)
@@ -650,7 +646,7 @@ contains
         type(text_t) :: msgs, text
         integer :: i, c, n, nerr, nprog, nblocks, k, j, high, nl
         logical :: tape, eia
-        call read_tape(path, bytes, status)
+        call read_input(path, bytes, status)
         if (status /= EXIT_OK) return
         tape = index(bytes, achar(0)) > 0
         high = 0
