@@ -559,7 +559,7 @@ def coverage_reasons(layer: Layer, run: sim.Run, tool: int, frames: Sequence[Fra
     shapes = raster.ShapeSet.of(list(layer.shapes) + drawn)
     try:
         report = raster.compare(run, tool, layer, tol=tol, clip=clip, drawn=drawn,
-                                shapes=shapes, progress=told("coverage,"))
+                                shapes=shapes, progress=told("coverage,"), examples=0)
     except ValueError as exc:
         return [reason("uncheckable", f"coverage cannot be checked: {exc}")]
     if report.ok:
