@@ -61,6 +61,9 @@ MIN_FEATURE_MM = 0.01
 DMAX_MM = 2.0
 #: the tool when the board has no tracks and its pads allow it
 DEFAULT_TOOL_MM = 0.25
+#: the widest tool a P card may name (TENZOR's limit): wider copper is
+#: drawn in several passes of it
+MAX_TOOL_MM = 20.0
 #: package names: the stem cut to this many characters, so NAME-DRILL fits 18
 NAME_LEN = 12
 
@@ -134,9 +137,16 @@ def read_drill(path: str | Path) -> tuple[list[Hole], int]:
     holes, slots = [], 0
     for o in x.objects:
         if isinstance(o, Flash):
+            if o.unit is None:
+                raise Unreadable(f"{path}: no unit: its header says neither METRIC nor INCH")
             o = o.converted(MM)
             dia = o.aperture.equivalent_width(MM)
-            holes.append(Hole(float(o.x), float(o.y), float(dia)))
+            hole = Hole(float(o.x), float(o.y), float(dia))
+            if not all(math.isfinite(v) for v in (hole.x, hole.y, hole.dia)):
+                raise Unreadable(f"{path}: hole {len(holes) + 1} (at {hole.x:.3f}, "
+                                 f"{hole.y:.3f} mm, {hole.dia:.3f} mm across) has a "
+                                 f"coordinate or size that is not a finite number")
+            holes.append(hole)
         else:
             slots += 1
     if not holes:
@@ -350,6 +360,8 @@ def _axis_rect(g: BaseGeometry) -> tuple[float, float, float, float] | None:
     """(cx, cy, w, h) when g is an axis-aligned rectangle."""
     if not isinstance(g, Polygon) or g.interiors:
         return None
+    if g.is_empty:
+        return None
     x0, y0, x1, y1 = g.bounds
     a = (x1 - x0) * (y1 - y0)
     if a <= 0 or abs(g.area - a) > 1e-6 * max(a, 1e-6) + 1e-9:
@@ -364,6 +376,37 @@ def _macro_kind(ap) -> str:
     return type(ap).__name__.replace("Aperture", "").lower()
 
 
+def _object_text(o) -> str:
+    """A graphic object as a user finds it in the file: what it is, its
+    aperture's D code, where it starts (mm)."""
+    from gerbonara.graphic_objects import Arc, Flash, Line, Region
+    from gerbonara.utils import MM
+    ap = getattr(o, "aperture", None)
+    d = f" of D{ap.original_number}" if getattr(ap, "original_number", None) is not None else ""
+    if isinstance(o, Flash):
+        return f"the flash{d} at {o.x:.3f}, {o.y:.3f} mm"
+    if isinstance(o, (Line, Arc)):
+        return f"the {'line' if isinstance(o, Line) else 'arc'}{d} from {o.x1:.3f}, {o.y1:.3f} mm"
+    if isinstance(o, Region) and o.outline:
+        x, y = (o.unit.convert_to(MM, v) for v in o.outline[0])
+        return f"the region (G36 to G37) from {x:.3f}, {y:.3f} mm"
+    return f"a {type(o).__name__.lower()}"
+
+
+def _finite(o) -> bool:
+    """Whether every coordinate of a graphic object and every size of its
+    aperture is a finite number (gerbonara reads "nan" and "inf" as numbers)."""
+    vals = [getattr(o, k) for k in ("x", "y", "x1", "y1", "x2", "y2", "cx", "cy")
+            if hasattr(o, k)]
+    vals += [v for pt in getattr(o, "outline", ()) for v in pt]
+    ap = getattr(o, "aperture", None)
+    for k in ("diameter", "w", "h", "hole_dia", "rotation", "parameters"):
+        v = getattr(ap, k, None)
+        vals += list(v) if isinstance(v, (tuple, list)) else [v]
+    return all(math.isfinite(float(v)) for v in vals
+               if isinstance(v, (int, float, Decimal)) and not isinstance(v, bool))
+
+
 def convert(g, holes: Sequence[Hole] = (), tools: tuple[float, float, float] | None = None,
             verbose: bool = True) -> Conversion:
     """A copper layer (gerbonara GerberFile) as the items of a deck."""
@@ -373,11 +416,24 @@ def convert(g, holes: Sequence[Hole] = (), tools: tuple[float, float, float] | N
 
     t0 = time.monotonic()
     objs = [o if isinstance(o, Region) else o.converted(MM) for o in g.objects]
+    for o in objs:
+        # gerbonara refuses a line drawn with no aperture selected, but lets a
+        # flash through with none
+        if isinstance(o, Flash) and o.aperture is None:
+            raise Refused(f"a flash (D03) at {o.x:.3f}, {o.y:.3f} mm with no aperture "
+                          f"selected before it (a D10 or higher that an AD defines)")
+        if not _finite(o):
+            raise Refused(f"{_object_text(o)}: a coordinate or an aperture's size is not "
+                          f"a finite number")
     n = len(objs)
     geoms: list[BaseGeometry] = []
     last = time.monotonic()
     for i, o in enumerate(objs):
-        geoms.append(object_geom(o))
+        try:
+            geoms.append(object_geom(o))
+        except (ValueError, ArithmeticError, IndexError, KeyError, TypeError) as exc:
+            # gerbonara's (a macro missing a parameter) or shapely's
+            raise Refused(f"{_object_text(o)} cannot be drawn ({exc})") from None
         if verbose and time.monotonic() - last > 2:
             progress(f"outlines: {i + 1} of {n} objects")
             last = time.monotonic()
@@ -385,15 +441,15 @@ def convert(g, holes: Sequence[Hole] = (), tools: tuple[float, float, float] | N
     clear_ix = [i for i, o in enumerate(objs) if not o.polarity_dark]
     tree = shapely.STRtree([geoms[i] for i in clear_ix]) if clear_ix else None
     cut_of: dict[int, list[int]] = {}
-    if tree is not None:
-        dark_ix = [i for i, o in enumerate(objs) if o.polarity_dark]
+    dark_ix = [i for i, o in enumerate(objs) if o.polarity_dark]
+    if tree is not None and dark_ix:
         pairs = tree.query([geoms[i] for i in dark_ix], predicate="intersects")
         for a, b in zip(*pairs):
             i, j = dark_ix[a], clear_ix[b]
             if j > i:
                 cut_of.setdefault(i, []).append(j)
 
-    dark = [gm for o, gm in zip(objs, geoms) if o.polarity_dark]
+    dark = [gm for o, gm in zip(objs, geoms) if o.polarity_dark and not gm.is_empty]
     if not dark:
         raise Refused("no dark copper in it")
     conv = Conversion(copper=shapely.STRtree(dark))
@@ -402,8 +458,18 @@ def convert(g, holes: Sequence[Hole] = (), tools: tuple[float, float, float] | N
     for h in holes:
         x0, y0 = min(x0, h.x - h.dia / 2), min(y0, h.y - h.dia / 2)
         x1, y1 = max(x1, h.x + h.dia / 2), max(y1, h.y + h.dia / 2)
+    if not all(math.isfinite(v) for v in (x0, y0, x1, y1)):
+        raise Refused("a coordinate or size is not a finite number")
     conv.origin = (math.floor(x0 * 100 + 1e-6) / 100, math.floor(y0 * 100 + 1e-6) / 100)
     conv.size = (x1 - conv.origin[0], y1 - conv.origin[1])
+    # before any outline is filled: the hatching of a board kilometres wide
+    # (a coordinate in the wrong format or unit) would take hours and all
+    # the memory there is
+    if max(conv.size) > FIELD_MM:
+        raise Refused(f"the copper{' and holes span' if holes else ' spans'} "
+                      f"{conv.size[0]:.2f} x {conv.size[1]:.2f} mm, more than the "
+                      f"{FIELD_MM:g} x {FIELD_MM:g} mm field of the coordinatograph (are the "
+                      f"coordinates in the unit and format the file's header says?)")
     ox, oy = conv.origin
 
     def pt(x: float, y: float) -> tuple[int, int]:
@@ -415,6 +481,11 @@ def convert(g, holes: Sequence[Hole] = (), tools: tuple[float, float, float] | N
     prev_end: tuple[int, int, int] | None = None      # (w, x, y) of the last track
     for i, (o, gm) in enumerate(zip(objs, geoms)):
         if not o.polarity_dark:
+            prev_end = None
+            continue
+        if gm.is_empty:
+            counts["objects that draw nothing (an aperture of no size, a region of no "
+                   "area) left out"] += 1
             prev_end = None
             continue
         if i in cut_of:
@@ -512,7 +583,7 @@ def convert(g, holes: Sequence[Hole] = (), tools: tuple[float, float, float] | N
         w3 = min(widths) if widths else _u(DEFAULT_TOOL_MM)
         small = [min(p.w, p.h or p.w) for p in conv.pads if max(p.w, p.h or 0) <= _u(DMAX_MM)]
         large = [min(p.w, p.h or p.w) for p in conv.pads if max(p.w, p.h or 0) > _u(DMAX_MM)]
-        w3 = min([w3] + small + large)
+        w3 = min([w3, _u(MAX_TOOL_MM)] + small + large)
         w1 = min([w3] + small)
         w2 = min([w3] + large)
     conv.tools = (w1, w2, w3)
@@ -667,10 +738,16 @@ def _polyline(pts: Sequence[tuple[int, int]], w: int | None) -> list[str]:
     return [cards.l_card(clean[0][0], clean[0][1], w)] + [cards.plus_card(x, y) for x, y in clean[1:]]
 
 
+def drill_tool(holes: Sequence[Hole]) -> int:
+    """The tool (units) of the drill package: the smallest hole rounded down,
+    0.01 to 20 mm."""
+    return min(min(max(_floor_u(h.dia), 1) for h in holes), _u(MAX_TOOL_MM))
+
+
 def drill_cards(holes: Sequence[Hole], origin: tuple[float, float]) -> tuple[list[str], int]:
     """One D card a hole, in file order, and the tool (units) for them."""
     ox, oy = origin
-    tool = min(max(_floor_u(h.dia), 1) for h in holes)
+    tool = drill_tool(holes)
     return [cards.d_card(_u(h.x - ox), _u(h.y - oy), max(_u(h.dia), tool)) for h in holes], tool
 
 
@@ -719,8 +796,9 @@ def _run(args: argparse.Namespace) -> int:
     try:
         start = _pair(args.start, "--start", 2) if args.start else START_MM
         tools = _pair(args.tools, "--tools", 3) if args.tools else None
-        if tools is not None and not all(0.01 <= t <= 20 for t in tools):
-            raise ValueError("--tools: each tool is 0.01 to 20.00 mm")
+        if tools is not None and not all(MIN_FEATURE_MM <= t <= MAX_TOOL_MM for t in tools):
+            raise ValueError(f"--tools: each tool is {MIN_FEATURE_MM:.2f} to "
+                             f"{MAX_TOOL_MM:.2f} mm")
     except ValueError as exc:
         print(f"gerber2deck: {exc}", file=sys.stderr)
         return 2
@@ -757,7 +835,7 @@ def _run(args: argparse.Namespace) -> int:
             print(f"gerber2deck: {args.drill}: {slots} slots (routed holes) left out",
                   file=sys.stderr)
         print(f"gerber2deck: {args.drill}: {len(holes)} holes -> package {name}-DRILL "
-              f"(tool {min(max(_floor_u(x.dia), 1) for x in holes) / 100:.2f} mm)",
+              f"(tool {drill_tool(holes) / 100:.2f} mm)",
               file=sys.stderr)
     w1, w2, w3 = conv.tools
     print(f"gerber2deck: {args.copper}: {w:.2f} x {h:.2f} mm, start point at board "
@@ -794,8 +872,8 @@ def _arguments(p: argparse.ArgumentParser) -> None:
                    help="where the start point (the board's lower-left corner) goes on the "
                         "field, mm (default 10,10)")
     p.add_argument("--tools", metavar="W1,W2,W3",
-                   help="the tools, mm (default: W3 the narrowest track, W1 and W2 no "
-                        "wider than W3 nor the smallest pad of their tape)")
+                   help="the tools, mm, each 0.01 to 20 (default: W3 the narrowest track, "
+                        "W1 and W2 no wider than W3 nor the smallest pad of their tape)")
     p.set_defaults(func=_run)
 
 

@@ -1,7 +1,8 @@
 """The neighbouring systems' tools on hostile files, in-process, in bulk
 (docs/ROBUSTNESS.md): dxf2deck's DXF drawings, profile's points, equidistant's
 decks, punch5121's frame text and tape images, cnclink's polylines and decks,
-split's and dda's numbers.
+split's and dda's numbers, gerber2deck's copper layers and drill files (whose
+decks TENZOR must then punch).
 
 Each tool's ``main`` is called directly (no process start; ~1 ms a call for
 most), on inputs from ``random.Random(seed)`` with fixed seeds. Whatever it
@@ -16,6 +17,7 @@ from __future__ import annotations
 import contextlib
 import io
 import random
+import subprocess
 import sys
 from pathlib import Path
 
@@ -151,6 +153,107 @@ def contour_deck(r: random.Random) -> str:
     return "\n".join(head + ["EQ"] + body + ["E"]) + "\n"
 
 
+#: RS-274X apertures: D10 is always round (the tracks' and arcs'), the
+#: others of any kind; OC8 and RR are macros the file defines
+APERTURES = ["C", "R", "O", "P", "OC8", "RR"]
+
+
+def _gnum(r: random.Random) -> str:
+    """A coordinate in 4.6 format: mostly on a board of +-200 mm, sometimes hostile."""
+    if r.random() < 0.1:
+        return r.choice(NUMS + ["99999999", "-99999999", "00", "2000000000000"])
+    return str(r.randint(-200, 200) * 10000 + r.randint(0, 9999))
+
+
+def _gsize(r: random.Random) -> str:
+    """An aperture size in mm: mostly 0.005 to 5 mm, sometimes hostile."""
+    return r.choice(NUMS) if r.random() < 0.1 else f"{r.uniform(0.005, 5):.4f}"
+
+
+def hostile_gerber(r: random.Random) -> str:
+    """A copper layer: apertures of every kind, flashes, tracks, arcs,
+    regions, polarity and transforms, a quarter of the files then mutated
+    line by line."""
+    lines = [r.choice(["%FSLAX46Y46*%"] * 3 + ["%FSLAX24Y24*%", "%FSTAX36Y36*%"]),
+             r.choice(["%MOMM*%", "%MOMM*%", "%MOIN*%"]),
+             "%AMOC8*5,1,8,0,0,1.08239X$1,22.5*%", "%AMRR*21,1,$1,$2,0,0,$3*1,1,$4,0,0*%"]
+    nap = r.randint(1, 6)
+    for k in range(nap):
+        kind = "C" if k == 0 else r.choice(APERTURES)
+        if kind == "C":
+            params = _gsize(r)
+        elif kind in "RO":
+            params = f"{_gsize(r)}X{_gsize(r)}"
+        elif kind == "P":
+            params = f"{_gsize(r)}X{r.choice(['3', '4', '8', '12', '0', '2'])}X{r.choice(['0', '45'])}"
+        elif kind == "OC8":
+            params = _gsize(r)
+        else:
+            params = f"{_gsize(r)}X{_gsize(r)}X{r.choice(['0', '90', '45'])}X{_gsize(r)}"
+        lines.append(f"%ADD{10 + k}{kind},{params}*%")
+    lines.append("D10*")
+    for _ in range(r.randint(1, 30)):
+        what = r.random()
+        if what < 0.15:                         # now and then an aperture not defined
+            lines.append(f"D{10 + r.randint(0, nap if r.random() < 0.1 else nap - 1)}*")
+        elif what < 0.4:
+            lines.append(f"X{_gnum(r)}Y{_gnum(r)}D03*")
+        elif what < 0.65:
+            lines += ["D10*"] if r.random() < 0.8 else []
+            lines += [f"X{_gnum(r)}Y{_gnum(r)}D02*", f"X{_gnum(r)}Y{_gnum(r)}D01*"]
+        elif what < 0.75:
+            lines += ["D10*"] if r.random() < 0.8 else []
+            lines += ["G75*", r.choice(["G02*", "G03*"]), f"X{_gnum(r)}Y{_gnum(r)}D02*",
+                      f"X{_gnum(r)}Y{_gnum(r)}I{_gnum(r)}J{_gnum(r)}D01*", "G01*"]
+        elif what < 0.85:
+            lines += ["G36*", f"X{_gnum(r)}Y{_gnum(r)}D02*"]
+            lines += [f"X{_gnum(r)}Y{_gnum(r)}D01*" for _ in range(r.randint(0, 6))]
+            lines.append("G37*")
+        elif what < 0.92:
+            lines.append(r.choice(["%LPC*%", "%LPD*%"]))
+        else:
+            lines.append(r.choice(["G04 a comment*", "%LMX*%", "%LR45*%", "%LS2*%", "%LR0*%"]))
+    lines.append("M02*")
+    if r.random() < 0.25:
+        for _ in range(r.randint(1, 4)):
+            i = r.randrange(len(lines))
+            how = r.random()
+            if how < 0.3:
+                del lines[i]
+            elif how < 0.5:
+                lines.insert(i, lines[i])
+            elif how < 0.8:
+                j = r.randrange(len(lines[i]) + 1)
+                lines[i] = lines[i][:j] + r.choice("9-.*%XD,") + lines[i][j:]
+            else:
+                lines[i] = "".join(chr(r.randint(32, 126)) for _ in range(r.randint(0, 12)))
+    return "\n".join(lines) + "\n"
+
+
+def hostile_drill(r: random.Random) -> str:
+    """An Excellon drill file: tools, hits (some before any tool, some of
+    hostile numbers), slots, a line now and then replaced by random text."""
+    tools = r.randint(1, 4)
+    lines = ["M48", r.choice(["METRIC", "INCH", "METRIC,TZ", "INCH,LZ", "METRIC,000.000"])]
+    lines += [f"T{k}C{_gsize(r)}" for k in range(1, tools + 1)]
+    lines.append(r.choice(["%", "M95"]))
+    for _ in range(r.randint(0, 15)):
+        what = r.random()
+        if what < 0.2:
+            lines.append(f"T{r.randint(0, tools + 1)}")
+        elif what < 0.85:
+            lines.append(f"X{r.uniform(-100, 200):.3f}Y{r.uniform(-100, 200):.3f}"
+                         if r.random() < 0.9 else f"X{r.choice(NUMS)}Y{r.choice(NUMS)}")
+        else:
+            lines.append(r.choice([f"G85X{r.uniform(0, 50):.3f}Y{r.uniform(0, 50):.3f}",
+                                   "G00X1Y1\nM15\nG01X5Y5\nM16"]))
+    lines.append("M30")
+    if r.random() < 0.3:
+        lines[r.randrange(len(lines))] = "".join(chr(r.randint(32, 126))
+                                                 for _ in range(r.randint(0, 12)))
+    return "\n".join(lines) + "\n"
+
+
 KINDS = {"dxf2deck": 6, "profile": 3, "equidistant": 3, "punch5121": 3, "punch5121-decode": 3,
          "cnclink": 3, "split": 2, "dda": 2}
 CHUNK = 100
@@ -235,6 +338,41 @@ def test_hostile_files(tmp_path, kind, n):
                 args += ["--fixed-ratio"]
             call(["dda", *args], here, where)
     hostile.count(PROGRAM.get(kind, kind), CHUNK)
+
+
+GERBER_CHUNKS = 4
+
+
+@pytest.mark.hostile
+@pytest.mark.parametrize("n", range(GERBER_CHUNKS))
+def test_hostile_gerber_files(tmp_path, tenzor_exe, n):
+    """gerber2deck on hostile copper layers and drill files: besides the
+    promises of ``call``, a refused board leaves no deck, and every deck it
+    writes is one TENZOR punches without an error."""
+    seed = 3900 + n
+    r = random.Random(seed)
+    for i in range(CHUNK):
+        here = tmp_path / f"case{i}"
+        here.mkdir()
+        where = f"seed {seed}, input {i}"
+        (here / "c.gbr").write_text(hostile_gerber(r), encoding="ascii")
+        argv = ["gerber2deck", str(here / "c.gbr"), "-o", str(here / "out.crd")]
+        if r.random() < 0.5:
+            (here / "d.drl").write_text(hostile_drill(r), encoding="ascii")
+            argv += ["--drill", str(here / "d.drl")]
+        if r.random() < 0.1:
+            argv += [r.choice(["--tools", "--start"]),
+                     ",".join(r.choice(NUMS + ["0.1", "0.5", "5"]) for _ in range(r.randint(1, 3)))]
+        status, err = call(argv, here, where)
+        deck = here / "out.crd"
+        assert status != 0 or deck.exists(), f"{where}: status 0 and no deck"
+        if status:
+            assert not deck.exists(), f"{where}: a deck written with status {status}"
+            continue
+        tz = subprocess.run([str(tenzor_exe), str(deck), "-o", str(here / "tapes")],
+                            capture_output=True, text=True, timeout=120)
+        assert tz.returncode == 0, f"{where}: TENZOR refused gerber2deck's deck: {tz.stderr[:500]}"
+    hostile.count("gerber2deck", CHUNK)
 
 
 # ---------------------------------------------------------------------------

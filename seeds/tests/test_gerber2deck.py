@@ -5,6 +5,8 @@ from __future__ import annotations
 import subprocess
 import sys
 
+import pytest
+
 BOARD = """%FSLAX46Y46*%
 %MOMM*%
 %ADD10C,1.600000*%
@@ -71,3 +73,87 @@ def test_errors_are_one_line_and_leave_no_deck(tmp_path):
     proc = g2d(junk, "-o", tmp_path / "junk.crd")
     assert proc.returncode in (1, 2) and "Traceback" not in proc.stderr
     assert len(proc.stderr.strip().splitlines()) == 1, proc.stderr
+
+
+# ---- what the batch fuzz found (seeds/tests/test_fuzz_seeds_batch.py) -------
+HEAD = "%FSLAX46Y46*%\n%MOMM*%\n"
+
+
+def refused(tmp_path, gerber: str, drill: str | None = None) -> subprocess.CompletedProcess:
+    """gerber2deck on the files given; it must say why in one line and
+    leave no deck."""
+    (tmp_path / "c.gbr").write_text(gerber)
+    args = [tmp_path / "c.gbr", "-o", tmp_path / "c.crd"]
+    if drill is not None:
+        (tmp_path / "d.drl").write_text(drill)
+        args += ["--drill", tmp_path / "d.drl"]
+    proc = g2d(*args)
+    assert proc.returncode in (1, 2), proc.stderr
+    assert "Traceback" not in proc.stderr
+    assert len(proc.stderr.strip().splitlines()) == 1, proc.stderr
+    assert not (tmp_path / "c.crd").exists()
+    return proc
+
+
+def test_a_board_wider_than_the_field_is_refused_before_it_is_filled(tmp_path):
+    # a region 2 km square: hatched band by band before the board's size was
+    # checked, it took hours and all the memory
+    proc = refused(tmp_path, HEAD + "%ADD10C,0.2*%\nD10*\nG36*\nX0Y0D02*\nX2000000000000Y0D01*\n"
+                   "X2000000000000Y2000000000000D01*\nX0Y2000000000000D01*\nX0Y0D01*\n"
+                   "G37*\nM02*\n")
+    assert proc.returncode == 1
+    assert "the copper spans 2000000.00 x 2000000.00 mm, more than the 1200 x 1200 mm field" \
+        in proc.stderr
+
+
+def test_a_flash_with_no_aperture_is_refused(tmp_path):
+    proc = refused(tmp_path, HEAD + "%ADD10C,1*%\nX1000000Y2000000D03*\nM02*\n")
+    assert proc.returncode == 1
+    assert "a flash (D03) at 1.000, 2.000 mm with no aperture selected before it" in proc.stderr
+
+
+@pytest.mark.parametrize("aperture, words", [
+    ("%ADD10C,nan*%", "the flash of D10 at 1.000, 2.000 mm: a coordinate or an aperture's "
+                      "size is not a finite number"),
+    ("%AMOC8*5,1,8,0,0,1.08239X$1,22.5*%\n%ADD10OC8,*%",
+     "the flash of D10 at 1.000, 2.000 mm cannot be drawn (Cannot fully resolve expression"),
+])
+def test_an_aperture_that_cannot_be_drawn_is_named(tmp_path, aperture, words):
+    proc = refused(tmp_path, HEAD + aperture + "\nD10*\nX1000000Y2000000D03*\nM02*\n")
+    assert proc.returncode == 1
+    assert words in proc.stderr
+
+
+def test_a_layer_of_clear_polarity_only_has_no_copper(tmp_path):
+    proc = refused(tmp_path, HEAD + "%ADD10C,1*%\n%LPC*%\nD10*\nX0Y0D03*\nX3000000Y0D03*\nM02*\n")
+    assert proc.returncode == 1 and "no dark copper in it" in proc.stderr
+
+
+def test_a_drill_file_without_a_unit_is_named(tmp_path):
+    proc = refused(tmp_path, BOARD, "M48\nT1C0.8\n%\nT1\nX1.0Y1.0\nM30\n")
+    assert proc.returncode == 2
+    assert "d.drl: no unit: its header says neither METRIC nor INCH" in proc.stderr
+
+
+def test_objects_that_draw_nothing_are_left_out_and_said(tmp_path, run_tenzor):
+    # a rectangle of no width flashed, and the same board's copper around it
+    gbr = tmp_path / "nothing.gbr"
+    gbr.write_text(BOARD.replace("%ADD12C,0.300000*%", "%ADD12C,0.300000*%\n%ADD13R,0X3.6*%")
+                   .replace("M02*", "D13*\nX3000000Y3000000D03*\nM02*"))
+    proc = g2d(gbr, "-o", tmp_path / "nothing.crd")
+    assert proc.returncode == 0, proc.stderr
+    assert ("1 objects that draw nothing (an aperture of no size, a region of no area) left out"
+            in proc.stderr)
+    result, _ = run_tenzor(tmp_path / "nothing.crd")
+    assert result.returncode == 0, result.stderr
+
+
+def test_copper_wider_than_the_widest_tool_takes_a_20_mm_tool(tmp_path, run_tenzor):
+    # tracks 30 mm wide: TENZOR's tools are 0.01 to 20 mm, so W3 is 20 mm
+    gbr = tmp_path / "wide.gbr"
+    gbr.write_text(HEAD + "%ADD10C,30*%\nD10*\nX0Y0D02*\nX200000000Y0D01*\nM02*\n")
+    proc = g2d(gbr, "-o", tmp_path / "wide.crd")
+    assert proc.returncode == 0, proc.stderr
+    assert "tools W1 20.00, W2 20.00, W3 20.00 mm" in proc.stderr
+    result, _ = run_tenzor(tmp_path / "wide.crd")
+    assert result.returncode == 0, result.stderr
