@@ -170,6 +170,10 @@ def _intersections(a: Element, b: Element) -> list[Point]:
 #: A gap at a corner shorter than this (mm) is closed by meeting in its
 #: middle rather than by an arc that the cards' 0.01 mm could not carry.
 SNAP_MM = 0.02
+#: the most chords one arc or one profile is cut into: a tolerance far
+#: below the cards' 0.01 mm (1e-9 mm, or 1e-320, where the step angle is
+#: 0) would ask for millions, billions or an endless number
+MAX_CHORDS = 1_000_000
 
 
 def equidistant(contour: Sequence[Element], radius: float, outside: bool = True) -> list[Element]:
@@ -265,7 +269,11 @@ def sample(e: Element, step: float = 0.5) -> list[Point]:
 def arc_chords(e: ArcEl, tol: float) -> list[Point]:
     """An arc as chords within ``tol`` of it (step angle :func:`chord_step`),
     from its start to its end."""
-    k = max(1, math.ceil(e.sweep / chord_step(e.r, tol) - 1e-9))
+    step = chord_step(e.r, tol)
+    if not (step > 0 and e.sweep / step <= MAX_CHORDS):
+        raise ValueError(f"an arc of radius {e.r:g} mm within {tol:g} mm needs more than "
+                         f"{MAX_CHORDS} chords: give a larger chord tolerance")
+    k = max(1, math.ceil(e.sweep / step - 1e-9))
     a0 = math.atan2(e.y0 - e.cy, e.x0 - e.cx)
     sgn = -1 if e.cw else 1
     pts = [(e.cx + e.r * math.cos(a0 + sgn * e.sweep * s / k),

@@ -615,10 +615,12 @@ def open_drawing(path: str) -> Any:
         raise Unreadable(f"{path}: {exc.strerror or exc}") from None
     except ezdxf.DXFError as exc:
         raise Unreadable(f"{path}: not a DXF drawing: {exc}") from None
-    except (ValueError, TypeError, LookupError, StopIteration, EOFError) as exc:
+    except (ValueError, TypeError, LookupError, StopIteration, EOFError,
+            ArithmeticError) as exc:
         # ezdxf's tag loader raises these on a malformed file (a value that
-        # is not a number, a group code without its value at the end, a file
-        # without the model space's layout)
+        # is not a number, or inf where an integer belongs; a group code
+        # without its value at the end, a file without the model space's
+        # layout)
         raise Unreadable(f"{path}: not a DXF drawing: {type(exc).__name__} "
                          f"{exc}".rstrip()) from None
     return doc

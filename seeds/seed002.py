@@ -41,11 +41,14 @@ from harness import cards
 from harness.deck import parse_deck
 from harness.files import write_whole
 
-from .contour import (ArcEl, Element, Seg, close_chain, contour_cards, contour_from_package,
-                      equidistant, sample, units)
+from .contour import (MAX_CHORDS, ArcEl, Element, Seg, close_chain, contour_cards,
+                      contour_from_package, equidistant, sample, units)
 
 Point = tuple[float, float]
 Number = Union[float, Fraction]
+
+#: the coordinatograph's field, mm: no cutter is wider
+FIELD_MM = 1200.0
 
 # ---------------------------------------------------------------------------
 # Table 1 and the printed equations.
@@ -217,6 +220,11 @@ def profile_chords(points: Sequence[Point], pieces: Sequence[Piece], tol: float)
     """The polyline of chords along the pieces (each piece cut into equal x
     steps of at most :func:`parabola_step`)."""
     pts = [(float(x), float(y)) for x, y in points]
+    steps = [(abs(pts[pc.last][0] - pts[pc.first][0]) / parabola_step(pc.coef[0], tol))
+             for pc in pieces]
+    if not (all(math.isfinite(q) for q in steps) and sum(steps) <= MAX_CHORDS):
+        raise ValueError(f"the profile within --chord {tol:g} mm needs more than {MAX_CHORDS} "
+                         f"chords: give a larger --chord")
     out = [pts[0]]
     for pc in pieces:
         x0, x1 = pts[pc.first][0], pts[pc.last][0]
@@ -623,7 +631,19 @@ def add_profile(sub: argparse._SubParsersAction) -> None:
     p.set_defaults(func=_run_profile)
 
 
+def cutter_problem(cutter: float) -> str | None:
+    """Why ``--cutter`` cannot be a cutter's diameter, or None."""
+    if math.isfinite(cutter) and 0 < cutter <= FIELD_MM:
+        return None
+    return (f"--cutter {cutter:g}: a cutter's diameter is a number of mm above 0 and at "
+            f"most {FIELD_MM:g} (the field)")
+
+
 def _run_equidistant(args: argparse.Namespace) -> int:
+    problem = cutter_problem(args.cutter)
+    if problem:
+        print(f"equidistant: {problem}", file=sys.stderr)
+        return 2
     try:
         text = sys.stdin.read() if args.deck == "-" else open(args.deck, encoding="ascii").read()
         out = equidistant_deck(text, args.cutter, not args.inside, args.chords)

@@ -42,7 +42,7 @@ from harness.files import write_whole
 from .contour import ArcEl, Element, Seg, arc_chords, close_chain, contour_from_package, \
     equidistant, units
 from .seed002 import (CODE_5121, EVEN_SHIFT_ROWS, FLANGE_CUTTER_MM, ROWS_PER_FRAME, Frame5121,
-                      frame_rows_5121, punch_5121, read_5121, tetrad)
+                      cutter_problem, frame_rows_5121, punch_5121, read_5121, tetrad)
 from .seed004 import DOCUMENT_MAX, split_move
 
 #: The paper's feed (s_мин = 60 mm/min) and sag of the chords (y = 0.02 mm).
@@ -258,6 +258,12 @@ def report(run: Ural1Run, feed: float, tol: float) -> str:
 
 
 def _run_ural1(args: argparse.Namespace) -> int:
+    problem = cutter_problem(args.cutter)
+    if problem is None and not (math.isfinite(args.feed) and args.feed > 0):
+        problem = f"--feed {args.feed:g}: a feed is a number of mm/min above 0"
+    if problem:
+        print(f"ural1: {problem}", file=sys.stderr)
+        return 2
     try:
         text = sys.stdin.read() if args.deck == "-" else open(args.deck, encoding="ascii").read()
         explain: list[str] | None = [] if args.explain else None

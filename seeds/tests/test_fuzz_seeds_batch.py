@@ -1,7 +1,8 @@
 """The neighbouring systems' tools on hostile files, in-process, in bulk
 (docs/ROBUSTNESS.md): dxf2deck's DXF drawings, profile's points, equidistant's
 decks, punch5121's frame text and tape images, cnclink's polylines and decks,
-split's and dda's numbers, gerber2deck's copper layers and drill files (whose
+split's and dda's numbers, ural1's contour decks and options, dxf2dmc's
+drawings and options, gerber2deck's copper layers and drill files (whose
 decks TENZOR must then punch).
 
 Each tool's ``main`` is called directly (no process start; ~1 ms a call for
@@ -255,7 +256,7 @@ def hostile_drill(r: random.Random) -> str:
 
 
 KINDS = {"dxf2deck": 6, "profile": 3, "equidistant": 3, "punch5121": 3, "punch5121-decode": 3,
-         "cnclink": 3, "split": 2, "dda": 2}
+         "cnclink": 3, "split": 2, "dda": 2, "ural1": 2, "dxf2dmc": 2}
 CHUNK = 100
 PLAN = [(kind, n) for kind, k in KINDS.items() for n in range(k)]
 PROGRAM = {"split": "seeds split", "punch5121-decode": "punch5121"}
@@ -279,6 +280,24 @@ def test_hostile_files(tmp_path, kind, n):
             status, err = call(argv, here, where)
             if status == 2:
                 assert not (here / "out.crd").exists(), f"{where}: a deck written with status 2"
+        elif kind == "dxf2dmc":
+            (here / "in.dxf").write_text(hostile_dxf(r), encoding="utf-8")
+            argv = ["dxf2dmc", str(here / "in.dxf"), "-o", str(here / "out.dmc")]
+            for opt in ("--mode", "--tolerance", "--counts-per-mm", "--speed", "--tool-bit"):
+                if r.random() < 0.15:
+                    argv += [opt, r.choice(NUMS + ["continuous", "intermittent"])]
+            status, err = call(argv, here, where)
+            if status == 2:
+                assert not (here / "out.dmc").exists(), f"{where}: a program written with 2"
+        elif kind == "ural1":
+            (here / "in.crd").write_text(contour_deck(r), encoding="utf-8")
+            argv = ["ural1", str(here / "in.crd"), "-o", str(here / "out.ptp")]
+            for opt in ("--cutter", "--tolerance", "--feed", "--max"):
+                if r.random() < 0.2:
+                    argv += [opt, r.choice(NUMS + ["20", "0.02", "60", "9999"])]
+            if r.random() < 0.2:
+                argv += ["--path"]
+            call(argv, here, where)
         elif kind == "profile":
             (here / "pts.txt").write_text(points_text(r), encoding="utf-8")
             argv = ["profile", str(here / "pts.txt"), "-o", str(here / "out.crd")]
@@ -349,7 +368,7 @@ def test_hostile_gerber_files(tmp_path, tenzor_exe, n):
     """gerber2deck on hostile copper layers and drill files: besides the
     promises of ``call``, a refused board leaves no deck, and every deck it
     writes is one TENZOR punches without an error."""
-    seed = 3900 + n
+    seed = 5000 + n
     r = random.Random(seed)
     for i in range(CHUNK):
         here = tmp_path / f"case{i}"
@@ -398,6 +417,18 @@ FOUND = [
     ("dda -1862 2147483648 --method integrator", None, 2, "more than 2097152"),  # 10 ** 2^32
     # the valve held 2^31 generator periods for each of X's pulses: gigabytes
     ("dda 3 0 --method master --lag 2147483647", None, 2, "generator periods with the lag"),
+    # ezdxf's tag loader on inf where an integer belongs: an OverflowError
+    ("dxf2deck", "0\nSECTION\n2\nENTITIES\n0\nLINE\n62\ninf\n0\nENDSEC\n0\nEOF\n", 2,
+     "not a DXF drawing: OverflowError"),
+    # a chord tolerance of 1e-320 mm: a step angle of 0 (ZeroDivisionError);
+    # profile's chords: test_a_profile_of_endless_chords_is_refused
+    ("equidistant --chords 1e-320", CONTOURS[0], 1, "more than 1000000 chords"),
+    # a cutter of 1e308, 0 or -1 mm, a feed of 0: a ZeroDivisionError, or a
+    # path of a cutter of no size
+    ("equidistant --cutter 1e308", CONTOURS[0], 2, "--cutter 1e+308: a cutter's diameter"),
+    ("equidistant --cutter -1", CONTOURS[0], 2, "--cutter -1: a cutter's diameter"),
+    ("ural1 --cutter 0", CONTOURS[0], 2, "--cutter 0: a cutter's diameter"),
+    ("ural1 --feed 0", CONTOURS[0], 2, "--feed 0: a feed is a number of mm/min above 0"),
 ]
 
 
@@ -410,3 +441,13 @@ def test_found_by_the_batch(tmp_path, command, text, status, words):
         argv.insert(1, str(path))
     got, err = call(argv, tmp_path, command)
     assert got == status and words in err, (got, err)
+
+
+def test_a_profile_of_endless_chords_is_refused(tmp_path):
+    """profile -o --chord 1e-320 cut the profile into chords without end and
+    took all the memory there is (the batch's process was killed at 23 GB)."""
+    (tmp_path / "pts.txt").write_text("1 1\n2 2\n3 4\n4 7\n", encoding="ascii")
+    status, err = call(["profile", str(tmp_path / "pts.txt"), "--chord", "1e-320", "-o",
+                        str(tmp_path / "out.crd")], tmp_path, "profile --chord 1e-320")
+    assert status == 1 and "more than 1000000 chords: give a larger --chord" in err, err
+    assert not (tmp_path / "out.crd").exists()
