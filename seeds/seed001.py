@@ -633,6 +633,16 @@ def _run(args: argparse.Namespace) -> int:
         tools = tuple(Decimal(v) for v in args.tools.split(",")) if args.tools else None
         if tools is not None and len(tools) != 3:
             raise ValueError("--tools needs W1,W2,W3")
+        if tools is not None and not all(t.is_finite() and Decimal("0.01") <= t <= 20
+                                         and t == t.quantize(Decimal("0.01")) for t in tools):
+            raise ValueError(f"--tools {args.tools}: each tool is 0.01 to 20.00 mm, in whole "
+                             f"0.01 mm")
+        if not all(math.isfinite(v) for v in origin):
+            raise ValueError(f"--origin {args.origin}: the drawing point is X,Y in mm, two "
+                             f"finite numbers")
+        if start is not None and not all(math.isfinite(v) and 0 <= v <= FIELD_MM for v in start):
+            raise ValueError(f"--start {args.start}: the start point's place on the field is "
+                             f"X,Y, each 0 to {FIELD_MM:g} mm")
         tol = check_tolerance(args.tolerance)
     except (ValueError, ArithmeticError) as exc:
         print(f"dxf2deck: {exc}", file=sys.stderr)

@@ -577,6 +577,9 @@ def _read_points(path: str) -> list[Point]:
             raise ValueError(f"line {no}: expected two numbers, got {line!r}") from None
         if not (math.isfinite(x) and math.isfinite(y)):
             raise ValueError(f"line {no}: {line!r} is not a finite point")
+        if max(abs(x), abs(y)) > FIELD_MM:
+            raise ValueError(f"line {no}: {line!r} is off the field (a point is at most "
+                             f"{FIELD_MM:g} mm from 0 either way)")
         pts.append((x, y))
     return pts
 

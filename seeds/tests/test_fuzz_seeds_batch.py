@@ -429,6 +429,14 @@ FOUND = [
     ("equidistant --cutter -1", CONTOURS[0], 2, "--cutter -1: a cutter's diameter"),
     ("ural1 --cutter 0", CONTOURS[0], 2, "--cutter 0: a cutter's diameter"),
     ("ural1 --feed 0", CONTOURS[0], 2, "--feed 0: a feed is a number of mm/min above 0"),
+    # dxf2deck's options were read but not checked: a ValueError or an
+    # OverflowError when the cards were written
+    ("dxf2deck --tools 0.5,nan,1e308", BOARD_DXF, 2, "--tools 0.5,nan,1e308: each tool is"),
+    ("dxf2deck --start 2147483648,1", BOARD_DXF, 2, "--start 2147483648,1: the start point's"),
+    ("dxf2deck --start inf,0", BOARD_DXF, 2, "--start inf,0: the start point's"),
+    ("dxf2deck --origin nan,0", BOARD_DXF, 2, "--origin nan,0: the drawing point is"),
+    # a point of 1e308 mm: an OverflowError when its chords became cards
+    ("profile", "-1e308 0\n33.14 -18.495\n35.88 47.374\n", 1, "line 1: '-1e308 0' is off"),
 ]
 
 
