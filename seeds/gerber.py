@@ -141,12 +141,7 @@ def read_drill(path: str | Path) -> tuple[list[Hole], int]:
                 raise Unreadable(f"{path}: no unit: its header says neither METRIC nor INCH")
             o = o.converted(MM)
             dia = o.aperture.equivalent_width(MM)
-            hole = Hole(float(o.x), float(o.y), float(dia))
-            if not all(math.isfinite(v) for v in (hole.x, hole.y, hole.dia)):
-                raise Unreadable(f"{path}: hole {len(holes) + 1} (at {hole.x:.3f}, "
-                                 f"{hole.y:.3f} mm, {hole.dia:.3f} mm across) has a "
-                                 f"coordinate or size that is not a finite number")
-            holes.append(hole)
+            holes.append(Hole(float(o.x), float(o.y), float(dia)))
         else:
             slots += 1
     if not holes:
