@@ -170,6 +170,9 @@ def _intersections(a: Element, b: Element) -> list[Point]:
 #: A gap at a corner shorter than this (mm) is closed by meeting in its
 #: middle rather than by an arc that the cards' 0.01 mm could not carry.
 SNAP_MM = 0.02
+#: the coordinatograph's field, mm: no coordinate relative to the origin, no
+#: size and no cutter is larger
+FIELD_MM = 1200.0
 #: the most chords one arc or one profile is cut into: a tolerance far
 #: below the cards' 0.01 mm (1e-9 mm, or 1e-320, where the step angle is
 #: 0) would ask for millions, billions or an endless number

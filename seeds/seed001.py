@@ -64,13 +64,10 @@ import shapely
 from harness import cards
 from harness.files import write_whole
 
-from .contour import ArcEl, Seg, arc_chords, contour_cards, distance_to
+from .contour import FIELD_MM, ArcEl, Seg, arc_chords, contour_cards, distance_to
 
 #: Chord tolerance (mm) for polyline bulges.
 BULGE_TOL = 0.005
-#: A coordinate, relative to the origin, or a size farther than this (mm)
-#: cannot be on the coordinatograph's 1200 x 1200 mm field.
-FIELD_MM = 1200.0
 #: The most entities a drawing may expand to, blocks exploded.
 ENTITY_BUDGET = 200_000
 #: Default tolerance (mm) within which a SPLINE is flattened into chords

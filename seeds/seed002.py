@@ -41,14 +41,11 @@ from harness import cards
 from harness.deck import parse_deck
 from harness.files import write_whole
 
-from .contour import (MAX_CHORDS, ArcEl, Element, Seg, close_chain, contour_cards,
+from .contour import (FIELD_MM, MAX_CHORDS, ArcEl, Element, Seg, close_chain, contour_cards,
                       contour_from_package, equidistant, sample, units)
 
 Point = tuple[float, float]
 Number = Union[float, Fraction]
-
-#: the coordinatograph's field, mm: no cutter is wider
-FIELD_MM = 1200.0
 
 # ---------------------------------------------------------------------------
 # Table 1 and the printed equations.
