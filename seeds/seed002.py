@@ -217,15 +217,16 @@ def profile_chords(points: Sequence[Point], pieces: Sequence[Piece], tol: float)
     """The polyline of chords along the pieces (each piece cut into equal x
     steps of at most :func:`parabola_step`)."""
     pts = [(float(x), float(y)) for x, y in points]
-    steps = [(abs(pts[pc.last][0] - pts[pc.first][0]) / parabola_step(pc.coef[0], tol))
-             for pc in pieces]
-    if not (all(math.isfinite(q) for q in steps) and sum(steps) <= MAX_CHORDS):
+    # each piece's run in steps, counted before any chord is made
+    runs = [(pts[pc.last][0] - pts[pc.first][0]) / parabola_step(pc.coef[0], tol)
+            for pc in pieces]
+    if not (all(math.isfinite(q) for q in runs) and sum(max(q, 1) for q in runs) <= MAX_CHORDS):
         raise ValueError(f"the profile within --chord {tol:g} mm needs more than {MAX_CHORDS} "
                          f"chords: give a larger --chord")
     out = [pts[0]]
-    for pc in pieces:
+    for pc, run in zip(pieces, runs):
         x0, x1 = pts[pc.first][0], pts[pc.last][0]
-        k = max(1, math.ceil((x1 - x0) / parabola_step(pc.coef[0], tol) - 1e-9))
+        k = max(1, math.ceil(run - 1e-9))
         for s in range(1, k + 1):
             x = x1 if s == k else x0 + (x1 - x0) * s / k
             out.append((x, pts[pc.last][1] if s == k else float(poly(pc.coef, x))))
