@@ -453,8 +453,6 @@ def convert(g, holes: Sequence[Hole] = (), tools: tuple[float, float, float] | N
     for h in holes:
         x0, y0 = min(x0, h.x - h.dia / 2), min(y0, h.y - h.dia / 2)
         x1, y1 = max(x1, h.x + h.dia / 2), max(y1, h.y + h.dia / 2)
-    if not all(math.isfinite(v) for v in (x0, y0, x1, y1)):
-        raise Refused("a coordinate or size is not a finite number")
     conv.origin = (math.floor(x0 * 100 + 1e-6) / 100, math.floor(y0 * 100 + 1e-6) / 100)
     conv.size = (x1 - conv.origin[0], y1 - conv.origin[1])
     # before any outline is filled: the hatching of a board kilometres wide
