@@ -41,6 +41,7 @@ from pathlib import Path
 
 import shapely
 import shapely.affinity
+import shapely.errors
 from shapely.geometry import LineString, Point, Polygon, box
 from shapely.geometry.base import BaseGeometry
 
@@ -388,9 +389,15 @@ def _object_text(o) -> str:
     return f"a {type(o).__name__.lower()}"
 
 
+#: No coordinate or aperture size of a board is more than this (mm, 10 km):
+#: beyond it, shapely's arithmetic overflows (an aperture of 1e308 mm).
+MAX_NUMBER_MM = 1e7
+
+
 def _finite(o) -> bool:
     """Whether every coordinate of a graphic object and every size of its
-    aperture is a finite number (gerbonara reads "nan" and "inf" as numbers)."""
+    aperture is a finite number (gerbonara reads "nan" and "inf" as numbers)
+    of at most MAX_NUMBER_MM."""
     vals = [getattr(o, k) for k in ("x", "y", "x1", "y1", "x2", "y2", "cx", "cy")
             if hasattr(o, k)]
     vals += [v for pt in getattr(o, "outline", ()) for v in pt]
@@ -398,7 +405,7 @@ def _finite(o) -> bool:
     for k in ("diameter", "w", "h", "hole_dia", "rotation", "parameters"):
         v = getattr(ap, k, None)
         vals += list(v) if isinstance(v, (tuple, list)) else [v]
-    return all(math.isfinite(float(v)) for v in vals
+    return all(abs(float(v)) <= MAX_NUMBER_MM for v in vals
                if isinstance(v, (int, float, Decimal)) and not isinstance(v, bool))
 
 
@@ -419,14 +426,15 @@ def convert(g, holes: Sequence[Hole] = (), tools: tuple[float, float, float] | N
                           f"selected before it (a D10 or higher that an AD defines)")
         if not _finite(o):
             raise Refused(f"{_object_text(o)}: a coordinate or an aperture's size is not "
-                          f"a finite number")
+                          f"a finite number of at most {MAX_NUMBER_MM:.0f} mm (10 km)")
     n = len(objs)
     geoms: list[BaseGeometry] = []
     last = time.monotonic()
     for i, o in enumerate(objs):
         try:
             geoms.append(object_geom(o))
-        except (ValueError, ArithmeticError, IndexError, KeyError, TypeError) as exc:
+        except (ValueError, ArithmeticError, IndexError, KeyError, TypeError,
+                shapely.errors.ShapelyError) as exc:
             # gerbonara's (a macro missing a parameter) or shapely's
             raise Refused(f"{_object_text(o)} cannot be drawn ({exc})") from None
         if verbose and time.monotonic() - last > 2:

@@ -115,6 +115,10 @@ def test_a_flash_with_no_aperture_is_refused(tmp_path):
 @pytest.mark.parametrize("aperture, words", [
     ("%ADD10C,nan*%", "the flash of D10 at 1.000, 2.000 mm: a coordinate or an aperture's "
                       "size is not a finite number"),
+    # found by the batch with another seed: shapely's arithmetic overflowed
+    # (GEOSException "Scale factor must be non-zero")
+    ("%ADD10C,1e308*%", "the flash of D10 at 1.000, 2.000 mm: a coordinate or an aperture's "
+                        "size is not a finite number of at most 10000000 mm (10 km)"),
     ("%AMOC8*5,1,8,0,0,1.08239X$1,22.5*%\n%ADD10OC8,*%",
      "the flash of D10 at 1.000, 2.000 mm cannot be drawn (Cannot fully resolve expression"),
 ])
