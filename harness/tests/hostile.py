@@ -30,8 +30,8 @@ ROOT = Path(__file__).resolve().parents[2]
 GOAL = 10_000
 #: Every program (or input format) the batch suites must reach in a whole run.
 PROGRAMS = ("tenzor", "em703", "dxf2deck", "dxf2dmc", "gerber2deck", "profile", "equidistant",
-            "punch5121", "ural1", "cnclink", "seeds split", "dda", "harness decode",
-            "harness verify")
+            "punch5121", "ural1", "cnclink", "seeds split", "dda", "tapereport",
+            "harness decode", "harness verify")
 #: The batch suites, which between them reach every program of PROGRAMS.
 SUITES = ("harness/tests/tenzor/test_fuzz_tenzor_batch.py",
           "harness/tests/em703/test_fuzz_em703_batch.py",

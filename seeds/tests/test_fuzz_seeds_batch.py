@@ -18,6 +18,7 @@ from __future__ import annotations
 import contextlib
 import io
 import random
+import shutil
 import subprocess
 import sys
 from pathlib import Path
@@ -392,6 +393,81 @@ def test_hostile_gerber_files(tmp_path, tenzor_exe, n):
                             capture_output=True, text=True, timeout=120)
         assert tz.returncode == 0, f"{where}: TENZOR refused gerber2deck's deck: {tz.stderr[:500]}"
     hostile.count("gerber2deck", CHUNK)
+
+
+TAPEREPORT_CHUNKS = 2
+
+
+@pytest.mark.hostile
+@pytest.mark.parametrize("n", range(TAPEREPORT_CHUNKS))
+def test_hostile_job_sheets(tmp_path, tenzor_exe, n):
+    """tapereport on a board's job sheets, tapes and deck (TENZOR's, for
+    seeds/tests/test_tapereport.py's deck), broken one to three ways: lines
+    of a job sheet, a tape's rows, the deck's cards, files missing or made
+    folders; the promises of ``call``."""
+    from seeds.tests.test_tapereport import DECK
+    seed = 6000 + n
+    r = random.Random(seed)
+    base = tmp_path / "base"
+    base.mkdir()
+    (base / "board.crd").write_text(DECK, encoding="ascii")
+    tz = subprocess.run([str(tenzor_exe), "board.crd", "-o", "out"], cwd=base,
+                        capture_output=True, text=True, timeout=120)
+    assert tz.returncode == 0, tz.stderr
+    files = sorted(p.name for p in (base / "out").iterdir())
+    tapes = [f for f in files if f.endswith(".ptp")]
+    for i in range(CHUNK):
+        here = tmp_path / f"case{i}"
+        shutil.copytree(base, here)
+        where = f"seed {seed}, input {i}"
+        out = here / "out"
+        for _ in range(r.randint(1, 3)):
+            what = r.random()
+            if what < 0.35:
+                job = out / r.choice(["BOARD.job", "BOARD-DRILL.job"])
+                if job.is_file():
+                    job.write_bytes(hostile.mutated_job(r, job.read_text(encoding="latin-1")))
+            elif what < 0.65:
+                tape = out / r.choice(tapes)
+                if tape.is_dir():
+                    continue
+                data = tape.read_bytes() if tape.is_file() else b""
+                tape.write_bytes(r.choice([hostile.mutated_tape(r, data),
+                                           hostile.random_bytes(r, 300), data[:r.randint(0, 40)],
+                                           hostile.valid_tape(r)]))
+                if r.random() < 0.7:             # the sheet no longer records it
+                    for job in filter(Path.is_file, out.glob("*.job")):
+                        text = job.read_text(encoding="latin-1")
+                        job.write_text("\n".join(ln for ln in text.splitlines()
+                                                 if "sha256" not in ln and ".bytes" not in ln),
+                                       encoding="latin-1")
+            elif what < 0.9:
+                deck = here / "board.crd"
+                if not deck.is_file():
+                    continue
+                lines = deck.read_bytes().split(b"\n")
+                k = r.randrange(len(lines))
+                lines[k] = r.choice([hostile.random_bytes(r, 30).replace(b"\n", b" "),
+                                     hostile.random_text(r, 40).encode("utf-8", "surrogatepass"),
+                                     b"", lines[r.randrange(len(lines))], lines[k][:r.randint(0, 20)],
+                                     b"E", b"C", b"BOARD-DRILL"])
+                deck.write_bytes(b"\n".join(lines))
+            else:
+                victim = r.choice([here / "board.crd", out / "BOARD-DRILL.job",
+                                   out / r.choice(tapes), out / "BOARD.job"])
+                if victim.is_file():
+                    victim.unlink()
+                    if r.random() < 0.3:
+                        victim.mkdir()
+        argv = ["tapereport", str(out / r.choice(["BOARD.job", "BOARD.job", "BOARD-DRILL.job"]))]
+        if r.random() < 0.7:
+            argv += ["--deck", str(here / "board.crd")]
+        status, err = call(argv, here, where)
+        if status:
+            named = [str(p) for p in (*here.rglob("*"), here / "board.crd", *out.glob("*"))]
+            assert any(name in err for name in named), f"{where}: no file named: {err[:300]!r}"
+        shutil.rmtree(here)
+    hostile.count("tapereport", CHUNK)
 
 
 # ---------------------------------------------------------------------------
