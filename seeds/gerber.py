@@ -119,6 +119,14 @@ class Hole:
     dia: float
 
 
+#: gerbonara's warnings for drill hits it leaves out, and what they mean.
+DROPPED_HITS = {
+    "Routing command found before first tool definition.":
+        "a hit before any tool is selected (a T line with the tool's number)",
+    "Bare coordinate after end of file": "a hit after the end of the program (M30)",
+}
+
+
 def read_drill(path: str | Path) -> tuple[list[Hole], int]:
     """The holes of an Excellon file in file order, and how many slots
     (routed holes) it has, which are left out."""
@@ -126,8 +134,8 @@ def read_drill(path: str | Path) -> tuple[list[Hole], int]:
     from gerbonara.graphic_objects import Flash
     from gerbonara.utils import MM
     try:
-        with warnings.catch_warnings():
-            warnings.simplefilter("ignore")
+        with warnings.catch_warnings(record=True) as said:
+            warnings.simplefilter("always")
             x = ExcellonFile.open(path)
     except OSError as exc:
         raise Unreadable(f"{path}: {exc.strerror or exc}") from None
@@ -135,6 +143,16 @@ def read_drill(path: str | Path) -> tuple[list[Hole], int]:
         raise Unreadable(f"{path}: not an Excellon drill file gerbonara can read "
                          f"({type(exc).__name__}: {str(exc).splitlines()[0] if str(exc) else ''})"
                          ) from None
+    # gerbonara reads on past a hit it cannot place, with only a warning
+    # ("FILE:LINE "TEXT": what"); the hole would be missing from the tour
+    for w in said:
+        text = str(w.message)
+        for what, why in DROPPED_HITS.items():
+            if text.endswith(what):
+                where = text[:-len(what)].rstrip(": ")
+                lost = sum(str(v.message).endswith(what) for v in said)
+                raise Unreadable(f"{where}: {why}; gerbonara leaves such hits out ({lost} in "
+                                 f"this file), and their holes would be missing from the deck")
     holes, slots = [], 0
     for o in x.objects:
         if isinstance(o, Flash):

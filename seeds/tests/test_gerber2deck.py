@@ -133,6 +133,22 @@ def test_a_layer_of_clear_polarity_only_has_no_copper(tmp_path):
     assert proc.returncode == 1 and "no dark copper in it" in proc.stderr
 
 
+@pytest.mark.parametrize("body, words", [
+    ("X1.0Y1.0\nX2.0Y2.0\nT1\nX5.0Y5.0\nM30\n",
+     'd.drl:5 "X1.0Y1.0": a hit before any tool is selected (a T line with the tool\'s number); '
+     'gerbonara leaves such hits out (2 in this file)'),
+    ("T1\nX1.0Y1.0\nM30\nX7.0Y7.0\n",
+     'd.drl:8 "X7.0Y7.0": a hit after the end of the program (M30); gerbonara leaves such '
+     'hits out (1 in this file)'),
+])
+def test_a_drill_hit_gerbonara_would_leave_out_is_named(tmp_path, body, words):
+    # gerbonara reads past such a hit with a warning only: the hole was
+    # missing from the deck without a word
+    proc = refused(tmp_path, BOARD, "M48\nMETRIC\nT1C0.8\n%\n" + body)
+    assert proc.returncode == 2
+    assert words in proc.stderr
+
+
 def test_a_drill_file_without_a_unit_is_named(tmp_path):
     proc = refused(tmp_path, BOARD, "M48\nT1C0.8\n%\nT1\nX1.0Y1.0\nM30\n")
     assert proc.returncode == 2
