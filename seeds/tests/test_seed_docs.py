@@ -5,7 +5,7 @@ from __future__ import annotations
 import re
 from pathlib import Path
 
-from seeds import seed004
+from seeds import seed003, seed004
 from seeds.__main__ import SUBCOMMANDS
 
 ROOT = Path(__file__).resolve().parents[2]
@@ -33,3 +33,17 @@ def test_pages_pictures_exist() -> None:
 def test_dda_picture_is_current() -> None:
     run = seed004.interpolate(9813, 8765, "decimal")
     assert (ROOT / "docs" / "img" / "dda-decimal.svg").read_text() == seed004.svg_plot(run)
+
+
+def test_cnc_link_page_gives_the_parameter_buffers_sizes() -> None:
+    """docs/SEED003-CNC-LINK.md's sizes of the parameter buffer and of its
+    message, for three, four and two axes."""
+    text = " ".join((ROOT / "docs" / "SEED003-CNC-LINK.md").read_text().split())
+    sizes = {}
+    for axes in (3, 4, 2):
+        values = {**seed003.defaults(), "axes": axes}
+        sizes[axes] = (len(seed003.param_buffer(values)), len(seed003.param_message(values)))
+    assert (f"little-endian: {sizes[3][0]} bytes for three axes, {sizes[4][0]} for four, "
+            f"{sizes[2][0]} for two.") in text
+    assert (f"`parameters: {sizes[3][1]} bytes` for three axes, {sizes[4][1]} for four, "
+            f"{sizes[2][1]} for two.") in text

@@ -73,6 +73,52 @@ def test_files_md_listing_excerpt_is_the_demo_listing(run_tenzor):
     assert at == sorted(at)
 
 
+def test_filling_md_control_plot_is_the_listings(run_tenzor):
+    """docs/FILLING.md quotes the conductor tape's control plot of
+    examples/filling.crd, down to its start point, as the listing prints it."""
+    text = (ROOT / "docs" / "FILLING.md").read_text()
+    block = text.split("## What the line printer shows", 1)[1].split("```", 2)[1]
+    quoted = block.strip("\n").splitlines()
+    assert len(quoted) > 10 and quoted[-1].startswith(" |+"), block
+    proc, out = run_tenzor(ROOT / "examples" / "filling.crd")
+    assert proc.returncode == 0
+    listing = (out / "FILLING.lst").read_text().splitlines()
+    plot = listing[next(i for i, line in enumerate(listing)
+                        if line.startswith(" CONTROL PLOT, TAPE L")):]
+    at = plot.index(quoted[0]) if quoted[0] in plot else -1
+    assert plot[at:at + len(quoted)] == quoted, "docs/FILLING.md's control plot is stale"
+
+
+def test_files_md_job_sheet_examples_are_the_demos(run_tenzor):
+    """docs/FILES.md's table of job sheet keys gives the demo's values as
+    examples (T as small; a value ending in ... is the start of one)."""
+    text = (ROOT / "docs" / "FILES.md").read_text()
+    section = text.split("## The job sheet, `.job`", 1)[1].split("\n## ", 1)[0]
+    proc, out = run_tenzor(ROOT / "examples" / "demo.crd")
+    assert proc.returncode == 0
+    job = dict(line.split(" = ", 1) for line in
+               (out / "LOGIC-CARD-A.job").read_text().splitlines() if " = " in line)
+    checked = 0
+    for keys_cell, example_cell in re.findall(r"^\| (`[^|]+) \| ([^|]*) \|", section, re.M):
+        keys = re.findall(r"`([^`]+)`", keys_cell)
+        examples = re.findall(r"`([^`]+)`", example_cell)
+        if not examples or " or " in example_cell:
+            continue
+        for key, example in zip(keys, examples * len(keys) if len(examples) == 1 else examples):
+            value = job[key.replace("T.", "small.")]
+            assert value.startswith(example[:-3]) if example.endswith("...") \
+                else value == example, (key, example, value)
+            checked += 1
+    assert checked >= 15, checked
+
+
+def test_readme_counts_the_demo_boards_pads():
+    from harness.deck import parse_deck
+    package = parse_deck((ROOT / "examples" / "demo.crd").read_text())[0]
+    readme = " ".join((ROOT / "README.md").read_text().split())
+    assert f"0.5 mm signals, {sum(p.n for p in package.pads)} pads)" in readme
+
+
 def test_filling_pictures_are_current(tmp_path):
     """docs/img/filling*.svg are what scripts/pictures.sh draws now."""
     import subprocess

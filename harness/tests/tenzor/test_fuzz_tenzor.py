@@ -309,6 +309,19 @@ def test_arc_ending_at_its_centre(tenzor_exe, tmp_path):
     assert o.proc.returncode == 1 and "ERROR CARD 3 " in o.err
 
 
+def test_a_pad_beyond_mxstk_is_one_message(tenzor_exe, tmp_path):
+    """Finding 8: a pad needing more than MXSTK strokes was reported twice,
+    with the same card and column; one fault is one message, on standard
+    error and in the listing."""
+    deck = (b"BIG\nP             600.00    600.00    0.01    0.01\n"
+            b"D              50.00     50.00  100.00\nE\n")
+    o = run_checked(tenzor_exe, tmp_path, deck)
+    assert o.proc.returncode == 1
+    said = "M703T ERROR CARD 3 COL 31: CAPACITY EXCEEDED: THE PAD NEEDS MORE THAN"
+    assert o.err.count(said) == 1, o.err
+    assert (o.out / "BIG.lst").read_text().count("CAPACITY EXCEEDED") == 1
+
+
 # ---------------------------------------------------------------------------
 # Hostile arguments.
 # ---------------------------------------------------------------------------
