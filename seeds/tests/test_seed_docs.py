@@ -3,7 +3,12 @@ and links every page, and the pages' pictures are what the tools draw."""
 from __future__ import annotations
 
 import re
+import shlex
+import subprocess
+import sys
 from pathlib import Path
+
+import pytest
 
 from seeds import seed003, seed004
 from seeds.__main__ import SUBCOMMANDS
@@ -47,3 +52,58 @@ def test_cnc_link_page_gives_the_parameter_buffers_sizes() -> None:
             f"{sizes[2][0]} for two.") in text
     assert (f"`parameters: {sizes[3][1]} bytes` for three axes, {sizes[4][1]} for four, "
             f"{sizes[2][1]} for two.") in text
+
+
+def _sessions(text: str) -> list[tuple[str, list[str]]]:
+    """(command, the lines shown after it) of each `$ python -m seeds` line."""
+    out: list[tuple[str, list[str]]] = []
+    fenced = session = False
+    for line in text.splitlines():
+        if line.startswith("```"):
+            fenced, session = not fenced, False
+        elif fenced and line.startswith("$ "):
+            out.append((line[2:], []))
+            session = True
+        elif session:
+            out[-1][1].append(line)
+    return [s for s in out if s[0].startswith("python -m seeds ")]
+
+
+def _seeds(tmp_path: Path, command: str) -> list[str]:
+    """What ``python -m seeds ...`` prints (standard output, then standard
+    error), run where examples/ is the project's."""
+    (tmp_path / "examples").symlink_to(ROOT / "examples")
+    proc = subprocess.run([sys.executable, *shlex.split(command)[1:]], cwd=tmp_path,
+                          capture_output=True, text=True, timeout=120)
+    return (proc.stdout + proc.stderr).splitlines()
+
+
+@pytest.mark.parametrize("page", PAGES + ["GERBER.md"])
+def test_the_seed_sessions_on_the_page_are_what_the_tools_print(tmp_path, page) -> None:
+    """Every `$ python -m seeds ...` session of a page prints what the page
+    shows (`...` stands for lines left out)."""
+    found = _sessions((ROOT / "docs" / page).read_text())
+    assert found or page != "SEED002-URAL1.md"
+    for i, (command, want) in enumerate(found):
+        here = tmp_path / str(i)
+        here.mkdir()
+        got = _seeds(here, command)
+        if "..." in want:
+            cut = want.index("...")
+            head, tail = want[:cut], want[cut + 1:]
+            assert got[:len(head)] == head and got[len(got) - len(tail):] == tail, \
+                (page, command, got)
+        else:
+            assert got == want, (page, command, got)
+
+
+def test_ural1_page_gives_the_contour_runs_figures(tmp_path) -> None:
+    """docs/SEED002-URAL1.md's figures of Table 5 read as the contour."""
+    got = "\n".join(_seeds(tmp_path, "python -m seeds ural1 examples/flange.crd -o f.5121"))
+    text = " ".join((ROOT / "docs" / "SEED002-URAL1.md").read_text().split())
+    sections = re.search(r": (\d+) sections", got)[1]
+    path_mm, path_s = re.search(r"^path ([\d.]+) mm, ([\d.]+) s", got, re.M).groups()
+    frames, rows, metres, minutes = re.search(
+        r"^tape: (\d+) frames, (\d+) rows .*?, ([\d.]+) m; .*: ([\d.]+) min$", got, re.M).groups()
+    assert (f"the same deck gives {sections} sections, {path_mm} mm, {path_s} s, {frames} "
+            f"frames, {rows} rows, {metres} m and {minutes} minutes of punching") in text
