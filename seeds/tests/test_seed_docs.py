@@ -107,3 +107,66 @@ def test_ural1_page_gives_the_contour_runs_figures(tmp_path) -> None:
         r"^tape: (\d+) frames, (\d+) rows .*?, ([\d.]+) m; .*: ([\d.]+) min$", got, re.M).groups()
     assert (f"the same deck gives {sections} sections, {path_mm} mm, {path_s} s, {frames} "
             f"frames, {rows} rows, {metres} m and {minutes} minutes of punching") in text
+
+
+#: The rows of SEED004-TAPE-CODES.md's table of deviations: (method, size,
+#: fixed ratio) of each value of a cell ("a / b": two sizes).
+_DEVIATION_ROWS = {
+    "binary, 14 bits (16 384)": [("binary", None, False)],
+    "decimal, 4 decades (10 000)": [("decimal", None, False)],
+    "integrator, 16 384 / 10 000": [("integrator", None, False), ("integrator", 10000, False)],
+    "counter, 16 384 / 10 000": [("counter", None, False), ("counter", 10000, False)],
+    "counter `--fixed-ratio`, 16 384 / 10 000": [("counter", None, True),
+                                                 ("counter", 10000, True)],
+}
+
+
+def test_tape_codes_page_deviation_table_is_what_dda_computes() -> None:
+    """Every cell of the table (the first frame; the long move split at 9999)."""
+    text = (ROOT / "docs" / "SEED004-TAPE-CODES.md").read_text()
+    rows = {}
+    for line in text.splitlines():
+        cells = [c.strip() for c in line.strip("|").split("|")]
+        if len(cells) == 3 and cells[0] in _DEVIATION_ROWS:
+            rows[cells[0]] = (cells[1].split(" / "), cells[2].split(" / "))
+    assert rows.keys() == _DEVIATION_ROWS.keys()
+    for label, runs in _DEVIATION_ROWS.items():
+        for k, (method, size, fixed) in enumerate(runs):
+            first = seed004.interpolate(*seed004.DOCUMENT_TABLE[0], method, size,
+                                        fixed_ratio=fixed)
+            split = seed004.interpolate(*seed004.DOCUMENT_MOVE, method, size, max_pulses=9999,
+                                        fixed_ratio=fixed)
+            assert (rows[label][0][k], rows[label][1][k]) == \
+                (f"{first.max_deviation:.3f}", f"{split.max_deviation:.3f}"), label
+
+
+def test_quoted_messages_are_the_tools(tmp_path) -> None:
+    """The messages SEED001-DXF.md and SEED003-CNC-LINK.md quote, and
+    README's split | punch5121 pipeline's ten frames."""
+    dxf = " ".join((ROOT / "docs" / "SEED001-DXF.md").read_text().split())
+    (tmp_path / "board.dxf").symlink_to(ROOT / "examples" / "dxf" / "board.dxf")
+    got = subprocess.run([sys.executable, "-m", "seeds", "dxf2deck", "board.dxf", "-o", "b.crd"],
+                         cwd=tmp_path, capture_output=True, text=True, timeout=120).stderr
+    quoted = re.search(r"`(dxf2deck: board\.dxf: ELLIPSE [^`]*)`", dxf)[1]
+    assert quoted in got.splitlines(), (quoted, got)
+
+    cnc = " ".join((ROOT / "docs" / "SEED003-CNC-LINK.md").read_text().split())
+    quoted = re.search(r"paper's `(ошибка вывода [^`]*)`", cnc)[1]
+    got = subprocess.run([sys.executable, "-m", "seeds", "cnclink", "examples/flange.crd",
+                          "--corrupt", "1"], cwd=ROOT, capture_output=True, text=True,
+                         timeout=120).stderr.splitlines()[-1]
+    pattern = re.escape(quoted).replace("N", r"\d+").replace("M", r"\d+")
+    assert re.fullmatch("cnclink: " + pattern, got), (quoted, got)
+
+    readme = " ".join((ROOT / "README.md").read_text().split())
+    assert "split --max 9999 98132 87647 | python -m seeds punch5121 - -o move.ptp` splits " \
+           "seed 004's long move into its ten frames" in readme
+    split = subprocess.run([sys.executable, "-m", "seeds", "split", "--max", "9999", "98132",
+                            "87647"], capture_output=True, text=True, timeout=120)
+    punch = subprocess.run([sys.executable, "-m", "seeds", "punch5121", "-", "-o", "move.ptp"],
+                           input=split.stdout, cwd=tmp_path, capture_output=True, text=True,
+                           timeout=120)
+    assert punch.returncode == 0, punch.stderr
+    back = subprocess.run([sys.executable, "-m", "seeds", "punch5121", "--decode", "move.ptp"],
+                          cwd=tmp_path, capture_output=True, text=True, timeout=120)
+    assert len(back.stdout.splitlines()) == 10, back.stdout

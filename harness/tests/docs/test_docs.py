@@ -112,6 +112,19 @@ def test_files_md_job_sheet_examples_are_the_demos(run_tenzor):
     assert checked >= 15, checked
 
 
+def test_files_md_frame_text_excerpt_is_the_demos(run_tenzor):
+    """docs/FILES.md's excerpt of a frame text: the demo's conductor tape,
+    its first frames and its end."""
+    text = (ROOT / "docs" / "FILES.md").read_text()
+    block = text.split("## The frame text, `.txt`", 1)[1].split("```", 2)[1]
+    head, tail = block.strip("\n").split("\n...\n")
+    proc, out = run_tenzor(ROOT / "examples" / "demo.crd")
+    assert proc.returncode == 0
+    frames = (out / "LOGIC-CARD-A-cond.txt").read_text().splitlines()
+    assert frames[:len(head.splitlines())] == head.splitlines()
+    assert frames[-len(tail.splitlines()):] == tail.splitlines()
+
+
 def test_readme_counts_the_demo_boards_pads():
     from harness.deck import parse_deck
     package = parse_deck((ROOT / "examples" / "demo.crd").read_text())[0]

@@ -129,3 +129,14 @@ def test_the_sizes_of_the_three_frames_are_what_em703_writes(em703_exe, example_
     assert m, "README.md no longer gives the fixed frame's length"
     assert (int(m.group(2)) - 1, int(m.group(2))) == (int(m.group(1)), row(demo)[2] // row(demo)[0])
     assert row(demo)[2] % row(demo)[0] == 0
+
+
+def test_tools_md_quotes_the_punchs_refusal(em703_exe, tmp_path) -> None:
+    """The message TOOLS.md quotes for a character EIA RS-244 has not."""
+    text = " ".join((ROOT / "docs" / "TOOLS.md").read_text().split())
+    quoted = re.search(r"stops the punch: `(prog\.ngc: [^`]*)`", text)[1]
+    (tmp_path / "prog.ngc").write_text("G00 X1\nG01 #1\n")
+    proc = subprocess.run([str(em703_exe), "punch", "--code", "eia", "prog.ngc"], cwd=tmp_path,
+                          capture_output=True, text=True, timeout=120)
+    assert proc.returncode == 1 and not list(tmp_path.glob("*.ptp"))
+    assert proc.stderr.splitlines() == [quoted], proc.stderr
