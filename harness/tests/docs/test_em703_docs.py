@@ -140,3 +140,19 @@ def test_tools_md_quotes_the_punchs_refusal(em703_exe, tmp_path) -> None:
                           capture_output=True, text=True, timeout=120)
     assert proc.returncode == 1 and not list(tmp_path.glob("*.ptp"))
     assert proc.stderr.splitlines() == [quoted], proc.stderr
+
+
+def test_tools_md_variable_frames_are_what_em703_writes(em703_exe, workdir) -> None:
+    """TOOLS.md's EXAMPLE3 tape in variable frames (a TAB shown as an arrow):
+    the numbered blocks em703 writes."""
+    text = (ROOT / "docs" / "TOOLS.md").read_text()
+    block = text.split("The same tape in variable frames", 1)[1].split("\n\n", 2)[1]
+    quoted = [line.strip() for line in block.splitlines()]
+    assert len(quoted) == 6, block
+    proc = subprocess.run([str(em703_exe), "gcode", "--dialect", "iso-1970s", "--frame",
+                           "variable", "out/EXAMPLE3-cond.ptp"], cwd=workdir,
+                          capture_output=True, text=True, timeout=120)
+    assert proc.returncode == 0, proc.stderr
+    blocks = [line.replace("\t", "\u2192") for line in proc.stdout.splitlines()
+              if line[:1].isdigit()]
+    assert blocks == quoted
