@@ -156,3 +156,19 @@ def test_tools_md_variable_frames_are_what_em703_writes(em703_exe, workdir) -> N
     blocks = [line.replace("\t", "\u2192") for line in proc.stdout.splitlines()
               if line[:1].isdigit()]
     assert blocks == quoted
+
+
+def test_readmes_em703_commands_run(em703_exe, workdir, tmp_path) -> None:
+    """Every `fpm run em703 -- ...` line of README.md's block of em703
+    commands runs, in order, on the demo's files, and exits 0."""
+    readme = (ROOT / "README.md").read_text()
+    block = readme.split("## The em703 tools", 1)[1].split("```sh\n", 1)[1].split("```", 1)[0]
+    lines = [line.split("#", 1)[0].split() for line in block.splitlines()
+             if line.startswith("fpm run em703 -- ")]
+    assert len(lines) >= 15, block
+    here = tmp_path / "readme"
+    shutil.copytree(workdir, here)
+    for words in lines:
+        proc = subprocess.run([str(em703_exe), *words[4:]], cwd=here, capture_output=True,
+                              timeout=120)
+        assert proc.returncode == 0, (" ".join(words), proc.stderr.decode("utf-8", "replace"))
