@@ -170,3 +170,23 @@ def test_quoted_messages_are_the_tools(tmp_path) -> None:
     back = subprocess.run([sys.executable, "-m", "seeds", "punch5121", "--decode", "move.ptp"],
                           cwd=tmp_path, capture_output=True, text=True, timeout=120)
     assert len(back.stdout.splitlines()) == 10, back.stdout
+
+
+def test_readmes_table_gives_only_options_the_commands_have() -> None:
+    """Each option README's table of the neighbouring systems gives a command
+    (`--drop/--noise/--corrupt N,...` is three) is one its parser takes."""
+    from seeds.__main__ import build_parser
+    readme = (ROOT / "README.md").read_text()
+    section = readme.split("## The neighbouring systems", 1)[1].split("\n## ", 1)[0]
+    sub = next(a for a in build_parser()._actions if a.choices and "dxf2deck" in a.choices)
+    checked = 0
+    for row in (line for line in section.splitlines() if line.startswith("| ")):
+        for usage in re.findall(r"`([a-z0-9]+ [^`]*)`", row):
+            name = usage.split()[0]
+            if name not in sub.choices:
+                continue
+            have = {o for a in sub.choices[name]._actions for o in a.option_strings}
+            for option in re.findall(r"--[a-z0-9-]+", usage):
+                assert option in have, (name, option, sorted(have))
+                checked += 1
+    assert checked >= 25, checked
