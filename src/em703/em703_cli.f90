@@ -515,9 +515,10 @@ contains
             '', &
             'The modern tools of the EM-703 tape subsystem (JINR P11-10356, 1977):', &
             '', &
-            '  list TAPE [--utf8]                   decode and check a tape', &
-            '  sim TAPE [--scale N:D] [--start X,Y] [--svg FILE]', &
-            '                                       run it on the coordinatograph', &
+            '  list TAPE [--utf8] [--code 8|K|auto] [--bare]', &
+            '                                       decode and check a tape', &
+            '  sim TAPE [--scale N:D] [--start X,Y] [--svg FILE] [--tool MM]', &
+            '           [--code 8|K|auto]           run it on the coordinatograph', &
             '  svg JOB [-o FILE]                    draw the tapes of a job sheet', &
             '  gcode TAPE|JOB [--dialect linuxcnc|grbl|iso-1970s] [--chords TOL] [--z]', &
             '                 [--frame address|fixed|variable] [-o FILE]', &
@@ -525,10 +526,12 @@ contains
             '  gerber JOB [-o FILE]                 Gerber RS-274X', &
             '  drill JOB [-o FILE]                  Excellon: a hit per pad, tour order', &
             '  punch --code iso|eia [-o TAPE] FILE  punch text on ISO or EIA tape', &
-            '  view TAPE                            a picture of a punched tape', &
+            '  view TAPE [--code auto|em703|iso|eia] [--rows FIRST:LAST]', &
+            '                                       a picture of a punched tape', &
             '  html JOB [-o FILE]                   the job on an animated machine', &
             '  split [--max N] [--equal] DX DY      a long move split into frames', &
-            '  check PROGRAM [--frame F]            seed 004''s reader: tape errors', &
+            '  check PROGRAM [--frame address|fixed|variable]', &
+            '                                       seed 004''s reader: tape errors', &
             '  --version                            the version', &
             '', &
             'Exit status: 0 done, 1 the input had errors, 2 usage or I/O error.'])

@@ -566,12 +566,17 @@ contains
         character(len=:), allocatable :: bytes, c, tmp
         type(error_t), allocatable :: err
         type(text_t) :: text
+        integer :: row
         call read_input(path, bytes, status)
         if (status /= EXIT_OK) return
         c = code
         if (c == 'auto') c = guess_code(bytes)
-        if (c == 'em703' .and. verify(bytes, FIVE_TRACK) > 0) then
-            call new_error(err, 'a row has holes beyond track 5: not an EM-703 tape')
+        row = 0
+        if (c == 'em703') row = verify(bytes, FIVE_TRACK)
+        if (row > 0) then
+            call new_error(err, 'holes beyond track 5 (octal ' // octal(iachar(bytes(row:row)), 3) // &
+                           '): not an EM-703 tape (--code iso or eia for a tape of 7 or 8 tracks)', &
+                           AT_ROW, row)
             err%file = path
             call say(error_text(err))
             status = EXIT_INPUT

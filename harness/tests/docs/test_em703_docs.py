@@ -172,3 +172,28 @@ def test_readmes_em703_commands_run(em703_exe, workdir, tmp_path) -> None:
         proc = subprocess.run([str(em703_exe), *words[4:]], cwd=here, capture_output=True,
                               timeout=120)
         assert proc.returncode == 0, (" ".join(words), proc.stderr.decode("utf-8", "replace"))
+
+
+def test_tools_md_headings_are_the_usage_lines(em703_exe) -> None:
+    """Each `## em703 SUB ...` heading of docs/TOOLS.md is the usage line
+    `em703 SUB --help` prints (its continuation lines joined), and every
+    subcommand `em703 --help` lists has one."""
+    text = (ROOT / "docs" / "TOOLS.md").read_text()
+    headings = [line[3:] for line in text.splitlines() if line.startswith("## em703 ")]
+    top = subprocess.run([str(em703_exe), "--help"], capture_output=True, text=True,
+                         timeout=60).stdout
+    subs = sorted({m for m in re.findall(r"^  ([a-z]+) ", top, re.M)})
+    assert len(subs) >= 11 and sorted(h.split()[1] for h in headings) == subs, (subs, headings)
+    # the list's entries name the same options as the headings
+    entries = re.split(r"\n(?=  [a-z-])", top.split("\n\n", 2)[2].split("\n\n")[0])
+    for entry in entries:
+        heading = next((h for h in headings if h.split()[1] == entry.split()[0]), None)
+        if heading is not None:
+            options = set(re.findall(r"(?<![\w-])--?[a-z][a-z0-9-]*", entry))
+            assert options == set(re.findall(r"(?<![\w-])--?[a-z][a-z0-9-]*", heading)), entry
+    for heading in headings:
+        got = subprocess.run([str(em703_exe), heading.split()[1], "--help"],
+                             capture_output=True, text=True, timeout=60).stdout
+        usage = got.split("\n\n", 1)[0]
+        assert usage.startswith("usage: "), got
+        assert " ".join(usage[len("usage: "):].split()) == heading

@@ -187,6 +187,26 @@ def test_view_of_em703_tapes_shows_each_row(em703_exe, example_tapes) -> None:
                 assert re.fullmatch(r"digit \d", what), line
 
 
+def test_view_names_the_row_of_a_tape_that_is_not_em703s(em703_exe, example_tapes,
+                                                       tmp_path) -> None:
+    """--code em703 on a tape with a row beyond track 5: the file, that row
+    (the first such), its code, and what would read it; a bad row the code
+    merely has not is drawn and named, exit 0 (docs/TOOLS.md)."""
+    data = bytearray(next(t for t in example_tapes if t.name == "EXAMPLE3-cond.ptp").read_bytes())
+    data[30], data[40] = 0o245, 0o377
+    tape = tmp_path / "t.ptp"
+    tape.write_bytes(bytes(data))
+    proc = run(em703_exe, "view", "--code", "em703", tape, check=1)
+    assert proc.stderr.decode() == (f"{tape}: row 31: holes beyond track 5 (octal 245): not an "
+                                    "EM-703 tape (--code iso or eia for a tape of 7 or 8 "
+                                    "tracks)\n")
+    assert not proc.stdout
+    data[30], data[40] = 0o25, 0o26        # rows of 5 tracks the code has not
+    tape.write_bytes(bytes(data))
+    proc = run(em703_exe, "view", tape, check=0)
+    assert not proc.stderr and len(proc.stdout.decode().splitlines()) == len(data) + 3
+
+
 @pytest.mark.parametrize("text, line, column, code", [
     ("G01 X1\nG00 #1=2\n", 2, 5, "eia"),
     ("G01 X1\r\nG00 X2 Y3 ;\n", 2, 11, "eia"),
