@@ -169,3 +169,31 @@ def check_outputs(proc, out: Path, deck_path: Path) -> list[str]:
     for pkg in parse_deck(deck_path.read_text(encoding="ascii")):
         problems += check_package(pkg, out, deck_path)
     return problems
+
+
+def doc_sessions(text: str, prefix: str) -> list[tuple[str, list[str]]]:
+    """(command, the lines shown after it) of each `$ PREFIX...` line in the
+    fenced blocks of a page (a session runs to the next `$` line or the end
+    of its block)."""
+    out: list[tuple[str, list[str]]] = []
+    fenced = session = False
+    for line in text.splitlines():
+        if line.startswith("```"):
+            fenced, session = not fenced, False
+        elif fenced and line.startswith("$ "):
+            out.append((line[2:], []))
+            session = True
+        elif session:
+            out[-1][1].append(line)
+    return [s for s in out if s[0].startswith(prefix)]
+
+
+def assert_session(got: list[str], want: list[str], where: object) -> None:
+    """A page's session output: ``got`` is ``want``, where a line ``...``
+    of ``want`` stands for any lines left out."""
+    if "..." in want:
+        cut = want.index("...")
+        head, tail = want[:cut], want[cut + 1:]
+        assert got[:len(head)] == head and got[len(got) - len(tail):] == tail, (where, got)
+    else:
+        assert got == want, (where, "\n".join(got))

@@ -10,6 +10,7 @@ from pathlib import Path
 
 import pytest
 
+from harness.tests.helpers import assert_session, doc_sessions
 from seeds import seed003, seed004
 from seeds.__main__ import SUBCOMMANDS
 
@@ -54,21 +55,6 @@ def test_cnc_link_page_gives_the_parameter_buffers_sizes() -> None:
             f"{sizes[2][1]} for two.") in text
 
 
-def _sessions(text: str) -> list[tuple[str, list[str]]]:
-    """(command, the lines shown after it) of each `$ python -m seeds` line."""
-    out: list[tuple[str, list[str]]] = []
-    fenced = session = False
-    for line in text.splitlines():
-        if line.startswith("```"):
-            fenced, session = not fenced, False
-        elif fenced and line.startswith("$ "):
-            out.append((line[2:], []))
-            session = True
-        elif session:
-            out[-1][1].append(line)
-    return [s for s in out if s[0].startswith("python -m seeds ")]
-
-
 def _seeds(tmp_path: Path, command: str) -> list[str]:
     """What ``python -m seeds ...`` prints (standard output, then standard
     error), run where examples/ is the project's."""
@@ -82,19 +68,12 @@ def _seeds(tmp_path: Path, command: str) -> list[str]:
 def test_the_seed_sessions_on_the_page_are_what_the_tools_print(tmp_path, page) -> None:
     """Every `$ python -m seeds ...` session of a page prints what the page
     shows (`...` stands for lines left out)."""
-    found = _sessions((ROOT / "docs" / page).read_text())
+    found = doc_sessions((ROOT / "docs" / page).read_text(), "python -m seeds ")
     assert found or page != "SEED002-URAL1.md"
     for i, (command, want) in enumerate(found):
         here = tmp_path / str(i)
         here.mkdir()
-        got = _seeds(here, command)
-        if "..." in want:
-            cut = want.index("...")
-            head, tail = want[:cut], want[cut + 1:]
-            assert got[:len(head)] == head and got[len(got) - len(tail):] == tail, \
-                (page, command, got)
-        else:
-            assert got == want, (page, command, got)
+        assert_session(_seeds(here, command), want, (page, command))
 
 
 def test_ural1_page_gives_the_contour_runs_figures(tmp_path) -> None:

@@ -16,25 +16,11 @@ from pathlib import Path
 
 import pytest
 
-from harness.tests.helpers import ROOT, iso_programs
+from harness.tests.helpers import ROOT, assert_session, doc_sessions, iso_programs
 from harness.tape import Frame, encode
 
 
 PAGES = ["docs/TOOLS.md", "docs/TAPE.md"]
-
-
-def sessions(text: str) -> list[tuple[str, list[str]]]:
-    """(command, expected lines) for each `$ em703` line of the page's blocks."""
-    out: list[tuple[str, list[str]]] = []
-    for block in re.findall(r"```\n(.*?)```", text, re.S):
-        current: tuple[str, list[str]] | None = None
-        for line in block.splitlines():
-            if line.startswith("$ "):
-                current = (line[2:], [])
-                out.append(current)
-            elif current is not None:
-                current[1].append(line)
-    return [s for s in out if s[0].startswith("em703 ")]
 
 
 @pytest.fixture(scope="module")
@@ -54,21 +40,15 @@ def workdir(examples, tmp_path_factory) -> Path:
 
 @pytest.mark.parametrize("page", PAGES)
 def test_the_examples_on_the_page_are_what_em703_prints(em703_exe, workdir, page) -> None:
-    found = sessions((ROOT / page).read_text())
+    found = doc_sessions((ROOT / page).read_text(), "em703 ")
     if page.endswith("TOOLS.md"):
         assert len(found) >= 10
     for command, want in found:
         args = shlex.split(command)
         proc = subprocess.run([str(em703_exe), *args[1:]], cwd=workdir, capture_output=True,
                               timeout=120)
-        got = (proc.stdout + proc.stderr).decode("utf-8").splitlines()
-        if "..." in want:
-            cut = want.index("...")
-            head, tail = want[:cut], want[cut + 1:]
-            assert got[:len(head)] == head and got[len(got) - len(tail):] == tail, \
-                (page, command, got)
-        else:
-            assert got == want, (page, command, "\n".join(got))
+        assert_session((proc.stdout + proc.stderr).decode("utf-8").splitlines(), want,
+                       (page, command))
 
 
 def _frame_sizes(em703_exe, job: Path, frame: str) -> tuple[int, int, int]:
