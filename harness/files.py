@@ -58,7 +58,11 @@ def write_whole(path: str | Path, data: bytes | str, encoding: str = "ascii",
             f.write(data)
         return
     directory = path.parent if str(path.parent) else Path(".")
-    fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=directory)
+    try:
+        fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=directory)
+    except OSError as exc:
+        # the message names the file asked for, not the temporary one beside it
+        raise type(exc)(exc.errno, exc.strerror, str(path)) from None
     try:
         with os.fdopen(fd, "wb") as f:
             f.write(data)
@@ -82,3 +86,15 @@ def write_whole(path: str | Path, data: bytes | str, encoding: str = "ascii",
         pass                        # not every file system can; the rename stands
     finally:
         os.close(dfd)
+
+
+def ascii_text(data: bytes, unit: str = "line") -> str:
+    """``data`` as ASCII text; ValueError naming the ``unit`` (line, card)
+    and column of the first byte that is not ASCII."""
+    try:
+        return data.decode("ascii")
+    except UnicodeDecodeError as exc:
+        bad = exc.start
+    line = data.count(b"\n", 0, bad) + 1
+    column = bad - (data.rfind(b"\n", 0, bad) + 1) + 1
+    raise ValueError(f"{unit} {line}, column {column}: byte {data[bad]:#04x} is not ASCII")

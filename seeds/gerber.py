@@ -815,9 +815,10 @@ def _run(args: argparse.Namespace) -> int:
     try:
         start = _pair(args.start, "--start", 2) if args.start else START_MM
         tools = _pair(args.tools, "--tools", 3) if args.tools else None
-        if tools is not None and not all(MIN_FEATURE_MM <= t <= MAX_TOOL_MM for t in tools):
-            raise ValueError(f"--tools: each tool is {MIN_FEATURE_MM:.2f} to "
-                             f"{MAX_TOOL_MM:.2f} mm")
+        if tools is not None and not all(MIN_FEATURE_MM <= t <= MAX_TOOL_MM
+                                         and abs(t * 100 - round(t * 100)) < 1e-6 for t in tools):
+            raise ValueError(f"--tools {args.tools}: each tool is {MIN_FEATURE_MM:.2f} to "
+                             f"{MAX_TOOL_MM:.2f} mm, in whole 0.01 mm")
     except ValueError as exc:
         print(f"gerber2deck: {exc}", file=sys.stderr)
         return 2

@@ -591,11 +591,14 @@ def deck_text(conv: Conversion, name: str, start_mm: Point | None = None,
     return cards.deck([cards.CardPackage(name, body)], job=job)
 
 
-def _pair(text: str) -> Point:
+def _pair(text: str, option: str) -> Point:
+    """X,Y of an option, two finite numbers of mm; ValueError naming it."""
     try:
         x, y = (float(v) for v in text.split(","))
     except ValueError:
-        raise ValueError(f"expected X,Y in mm, not {text!r}") from None
+        x = y = math.nan
+    if not (math.isfinite(x) and math.isfinite(y)):
+        raise ValueError(f"{option} {text}: X,Y in mm, two finite numbers, not {text!r}")
     return x, y
 
 
@@ -625,22 +628,25 @@ def open_drawing(path: str) -> Any:
 
 def _run(args: argparse.Namespace) -> int:
     try:
-        origin = _pair(args.origin) if args.origin else (0.0, 0.0)
-        start = _pair(args.start) if args.start else None
-        tools = tuple(Decimal(v) for v in args.tools.split(",")) if args.tools else None
+        origin = _pair(args.origin, "--origin") if args.origin else (0.0, 0.0)
+        start = _pair(args.start, "--start") if args.start else None
+        try:
+            tools = tuple(Decimal(v) for v in args.tools.split(",")) if args.tools else None
+        except ArithmeticError:                 # decimal.InvalidOperation: not a number
+            tools = (Decimal("NaN"),) * 3
         if tools is not None and len(tools) != 3:
             raise ValueError("--tools needs W1,W2,W3")
         if tools is not None and not all(t.is_finite() and Decimal("0.01") <= t <= 20
                                          and t == t.quantize(Decimal("0.01")) for t in tools):
             raise ValueError(f"--tools {args.tools}: each tool is 0.01 to 20.00 mm, in whole "
                              f"0.01 mm")
-        if not all(math.isfinite(v) for v in origin):
-            raise ValueError(f"--origin {args.origin}: the drawing point is X,Y in mm, two "
-                             f"finite numbers")
         if start is not None and not all(math.isfinite(v) and 0 <= v <= FIELD_MM for v in start):
             raise ValueError(f"--start {args.start}: the start point's place on the field is "
                              f"X,Y, each 0 to {FIELD_MM:g} mm")
         tol = check_tolerance(args.tolerance)
+        if args.name is not None and not re.fullmatch(r"[A-Za-z0-9_-]{1,18}", args.name):
+            raise ValueError(f"--name {args.name!r}: 1 to 18 letters, digits, - or _ (the "
+                             f"name card's columns 1-18, and the stem of TENZOR's files)")
     except (ValueError, ArithmeticError) as exc:
         print(f"dxf2deck: {exc}", file=sys.stderr)
         return 2
@@ -862,5 +868,7 @@ def add_dxfboard(sub: argparse._SubParsersAction) -> None:
     p = sub.add_parser("dxfboard", help="write the DXF round trip's known board (seed 001)",
                        description="Write DIR/board.dxf (with ezdxf) and DIR/board-known.crd: "
                                    "the same board as a drawing and as cards.")
-    p.add_argument("dir", nargs="?", default="examples/dxf", metavar="DIR")
+    p.add_argument("dir", nargs="?", default="examples/dxf", metavar="DIR",
+                   help="where to write them (default examples/dxf, the project's own "
+                        "copies, when run in the project's folder)")
     p.set_defaults(func=_run_board)

@@ -446,7 +446,7 @@ def _run(args: argparse.Namespace) -> int:
             raise ValueError(f"--speed {speed:g} mm/s is not above 0 and at most 10000")
         if args.tool_bit not in BITS:
             raise ValueError(f"--tool-bit {args.tool_bit} is not one of 1-8")
-        origin = seed001._pair(args.origin) if args.origin else (0.0, 0.0)
+        origin = seed001._pair(args.origin, "--origin") if args.origin else (0.0, 0.0)
     except (ValueError, ArithmeticError) as exc:
         print(f"dxf2dmc: {exc}", file=sys.stderr)
         return 2

@@ -35,11 +35,12 @@ import sys
 from collections.abc import Iterable, Sequence
 from dataclasses import dataclass
 from fractions import Fraction
+from pathlib import Path
 from typing import Union
 
 from harness import cards
 from harness.deck import parse_deck
-from harness.files import write_whole
+from harness.files import ascii_text, write_whole
 
 from .contour import (FIELD_MM, MAX_CHORDS, ArcEl, Element, Seg, close_chain, contour_cards,
                       contour_from_package, equidistant, sample, units)
@@ -560,7 +561,7 @@ def paper_report() -> str:
 
 def _read_points(path: str) -> list[Point]:
     """'x y' per line (mm), '#' comments, blank lines ignored."""
-    text = sys.stdin.read() if path == "-" else open(path, encoding="ascii").read()
+    text = sys.stdin.read() if path == "-" else ascii_text(Path(path).read_bytes())
     pts = []
     for no, line in enumerate(text.splitlines(), 1):
         line = line.split("#", 1)[0].strip()
@@ -593,7 +594,14 @@ def _run_profile(args: argparse.Namespace) -> int:
             sys.stdout.write(paper_report())
             return 0
         if args.points:
-            pts = _read_points(args.points)
+            try:
+                pts = _read_points(args.points)
+            except OSError as exc:
+                print(f"profile: {args.points}: {exc.strerror or exc}", file=sys.stderr)
+                return 2
+            except ValueError as exc:
+                print(f"profile: {args.points}: {exc}", file=sys.stderr)
+                return 1
         else:
             pts = [(float(x), float(y)) for x, y in TABLE1.values()]
         sys.stdout.write(profile_report(pts, args.tol))
@@ -608,9 +616,12 @@ def _run_profile(args: argparse.Namespace) -> int:
             body += [cards.plus_card(*u) for u in path[1:]]
             text = cards.deck([cards.CardPackage("PROFILE", body)], job="URAL-1 PROFILE")
             write_whole(args.output, text, inputs=[args.points] if args.points else [])
-    except (OSError, ValueError) as exc:
+    except OSError as exc:
+        print(f"profile: {exc.filename or args.output}: {exc.strerror or exc}", file=sys.stderr)
+        return 2
+    except ValueError as exc:
         print(f"profile: {exc}", file=sys.stderr)
-        return 1 if isinstance(exc, ValueError) else 2
+        return 1
     return 0
 
 
@@ -642,11 +653,18 @@ def cutter_problem(cutter: float) -> str | None:
 
 def _run_equidistant(args: argparse.Namespace) -> int:
     problem = cutter_problem(args.cutter)
+    if problem is None and args.chords is not None and not (math.isfinite(args.chords)
+                                                           and args.chords > 0):
+        problem = f"--chords {args.chords:g}: a chord tolerance is a number of mm above 0"
     if problem:
         print(f"equidistant: {problem}", file=sys.stderr)
         return 2
     try:
-        text = sys.stdin.read() if args.deck == "-" else open(args.deck, encoding="ascii").read()
+        try:
+            text = sys.stdin.read() if args.deck == "-" else ascii_text(Path(args.deck).read_bytes())
+        except OSError as exc:
+            print(f"equidistant: {args.deck}: {exc.strerror or exc}", file=sys.stderr)
+            return 2
         out = equidistant_deck(text, args.cutter, not args.inside, args.chords)
         if args.svg:
             layers = []
@@ -659,8 +677,8 @@ def _run_equidistant(args: argparse.Namespace) -> int:
             write_whole(args.output, out, inputs=[args.deck])
         else:
             sys.stdout.write(out)
-    except OSError as exc:
-        print(f"equidistant: {args.deck}: {exc.strerror or exc}", file=sys.stderr)
+    except OSError as exc:                      # an output
+        print(f"equidistant: {exc.filename}: {exc.strerror or exc}", file=sys.stderr)
         return 2
     except ValueError as exc:
         print(f"equidistant: {args.deck}: {exc}", file=sys.stderr)
@@ -715,7 +733,7 @@ def _run_punch5121(args: argparse.Namespace) -> int:
                 sys.stdout.write(f"{f.dx} {f.dy} {f.dz} {f.speed} {f.aux_x} {f.aux_y} "
                                  f"{f.aux_z}\n")
             return 0
-        text = sys.stdin.read() if args.input == "-" else open(args.input, encoding="ascii").read()
+        text = sys.stdin.read() if args.input == "-" else ascii_text(Path(args.input).read_bytes())
         data = punch_5121(_read_frames_text(text), even_shift=args.even_shift)
         if not args.output:
             print("punch5121: -o TAPE.ptp is required to punch", file=sys.stderr)

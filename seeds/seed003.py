@@ -956,6 +956,12 @@ def _run_cnclink(args: argparse.Namespace) -> int:
             if value is not None and value < (0 if name == "resend" else 1):
                 raise ValueError(f"--{name.replace('_', '-')} {value}: expected a whole "
                                  f"number from {0 if name == 'resend' else 1}")
+        # options of the run and of the parameters, given without them
+        for name, needs, given in (("--stop-at", "--run", args.stop_at is not None),
+                                   ("--panel-stop", "--run", args.panel_stop is not None),
+                                   ("--corrupt-params", "--params", bool(args.corrupt_params))):
+            if given and not getattr(args, needs[2:]):
+                raise ValueError(f"{name} is an option of {needs}, which is not given")
     except ValueError as exc:
         err(str(exc))
         return 2

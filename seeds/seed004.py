@@ -89,7 +89,7 @@ def _sign(v: int) -> int:
 def frames_needed(dx: int, dy: int, max_pulses: int) -> int:
     """The fewest frames of at most ``max_pulses`` per axis for (dx, dy)."""
     if max_pulses < 1:
-        raise ValueError(f"the frame limit must be at least 1 pulse, not {max_pulses}")
+        raise ValueError(f"--max {max_pulses}: a frame's limit is at least 1 pulse")
     return max(-(-abs(dx) // max_pulses), -(-abs(dy) // max_pulses))
 
 
@@ -187,7 +187,7 @@ def split_equal(dx: int, dy: int, max_pulses: int = DOCUMENT_MAX) -> EqualSplit:
     pulses and limits 1-7 a split exists exactly when a search of all equal
     frames finds one)."""
     if max_pulses < 1:
-        raise ValueError(f"the frame limit must be at least 1 pulse, not {max_pulses}")
+        raise ValueError(f"--max {max_pulses}: a frame's limit is at least 1 pulse")
     u, v = abs(dx), abs(dy)
     swap = v > u
     if swap:
@@ -221,6 +221,9 @@ def split_equal(dx: int, dy: int, max_pulses: int = DOCUMENT_MAX) -> EqualSplit:
         raise ValueError(f"no equal frames of at most {max_pulses} pulses fit the move "
                          f"({dx}, {dy})")
     _, (a, b), k, (ru, rv), err = best
+    if k + ((ru, rv) != (0, 0)) > MOST_FRAMES:
+        raise ValueError(f"the move ({dx}, {dy}) needs {k + ((ru, rv) != (0, 0))} equal frames "
+                         f"of at most {max_pulses} pulses, more than {MOST_FRAMES}")
     dev = err / math.hypot(u, v)
 
     def orient(x: int, y: int) -> tuple[int, int]:
@@ -471,11 +474,16 @@ def interpolate(dx: int, dy: int, method: str = "binary", size: int | None = Non
         raise ValueError(f"the lag is a number of generator periods, not {lag}")
     if fixed_ratio and method != "counter":
         raise ValueError(f"a fixed ratio is the counter interpolator's, not the {method}'s")
-    frames = split_move(dx, dy, max_pulses) if max_pulses else [(dx, dy)]
+    frames = split_move(dx, dy, max_pulses) if max_pulses is not None else [(dx, dy)]
+    given = size is not None
     if size is None:
         size = counter_size(method, frames)
     if method not in ("integrator", "counter") and not 1 <= size <= 64:
-        raise ValueError(f"the counter size must be 1 to 64 (bits or decades), not {size}")
+        if given:
+            raise ValueError(f"--size {size}: the counter size is 1 to 64 (bits or decades)")
+        raise ValueError(f"a frame of {max(max(abs(a), abs(b)) for a, b in frames)} pulses "
+                         f"needs a counter of {size} bits or decades, more than 64: give "
+                         f"--max to split the move")
     # (not a dict of the methods: that would compute 10 ** size for an integrator's
     # volume of 2^32, which takes minutes)
     volume = (1 << size if method in ("binary", "master") else 10 ** size if method == "decimal"

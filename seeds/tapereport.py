@@ -32,6 +32,7 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from harness.deck import CardError, parse_deck, sanitise
+from harness.files import ascii_text
 from harness.sim import simulate
 from harness.tape import TapeError, decode
 
@@ -139,14 +140,10 @@ def own_order_travel(deck: Path, package: str) -> tuple[int, float]:
     """(holes, travel in mm) of a package's pads in deck order, split as
     TENZOR splits them onto the small and large tapes. ``package`` is the
     name as in file names (a name card is matched as TENZOR names its files)."""
-    data = _read(deck, "")
-    bad = next((i for i, b in enumerate(data) if b > 127), None)
-    if bad is not None:
-        card = data.count(b"\n", 0, bad) + 1
-        column = bad - (data.rfind(b"\n", 0, bad) + 1) + 1
-        raise ReportError(1, f"{deck}: card {card}, column {column}: byte {data[bad]:#04x} is "
-                             f"not ASCII: not a card deck")
-    lines = data.decode("ascii").split("\n")
+    try:
+        lines = ascii_text(_read(deck, ""), "card").split("\n")
+    except ValueError as exc:
+        raise ReportError(1, f"{deck}: {exc}: not a card deck") from None
     start = next((i for i, ln in enumerate(lines)
                   if ln[:1] not in ("*", "#") and ln[:72].strip()
                   and sanitise(ln[:18]) == package), None)

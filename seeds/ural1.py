@@ -35,9 +35,10 @@ import math
 import sys
 from dataclasses import dataclass
 from collections.abc import Sequence
+from pathlib import Path
 
 from harness.deck import parse_deck
-from harness.files import write_whole
+from harness.files import ascii_text, write_whole
 
 from .contour import ArcEl, Element, Seg, arc_chords, close_chain, contour_from_package, \
     equidistant, units
@@ -261,11 +262,13 @@ def _run_ural1(args: argparse.Namespace) -> int:
     problem = cutter_problem(args.cutter)
     if problem is None and not (math.isfinite(args.feed) and args.feed > 0):
         problem = f"--feed {args.feed:g}: a feed is a number of mm/min above 0"
+    if problem is None and not (math.isfinite(args.tolerance) and args.tolerance > 0):
+        problem = f"--tolerance {args.tolerance:g}: a chord tolerance is a number of mm above 0"
     if problem:
         print(f"ural1: {problem}", file=sys.stderr)
         return 2
     try:
-        text = sys.stdin.read() if args.deck == "-" else open(args.deck, encoding="ascii").read()
+        text = sys.stdin.read() if args.deck == "-" else ascii_text(Path(args.deck).read_bytes())
         explain: list[str] | None = [] if args.explain else None
         runs = ural1_runs(text, args.path, args.cutter, args.tolerance, args.feed, args.max,
                           not args.no_even_shift, explain)

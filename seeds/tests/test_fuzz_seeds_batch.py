@@ -509,10 +509,29 @@ FOUND = [
     # OverflowError when the cards were written
     ("dxf2deck --tools 0.5,nan,1e308", BOARD_DXF, 2, "--tools 0.5,nan,1e308: each tool is"),
     ("dxf2deck --start 2147483648,1", BOARD_DXF, 2, "--start 2147483648,1: the start point's"),
-    ("dxf2deck --start inf,0", BOARD_DXF, 2, "--start inf,0: the start point's"),
-    ("dxf2deck --origin nan,0", BOARD_DXF, 2, "--origin nan,0: the drawing point is"),
+    ("dxf2deck --start inf,0", BOARD_DXF, 2, "--start inf,0: X,Y in mm, two finite numbers"),
+    ("dxf2deck --origin nan,0", BOARD_DXF, 2, "--origin nan,0: X,Y in mm, two finite"),
     # a point of 1e308 mm: an OverflowError when its chords became cards
     ("profile", "-1e308 0\n33.14 -18.495\n35.88 47.374\n", 1, "line 1: '-1e308 0' is off"),
+    # found by reading the pages against the tools: a traceback (a name the
+    # card writer refuses; 10^17 equal frames, a MemoryError), a message
+    # that garbled or named nothing, blamed the deck for an option, or an
+    # option that changed nothing
+    ("dxf2deck --name ABCDEFGHIJKLMNOPQRSTU", BOARD_DXF, 2, "--name 'ABCDEFGHIJKLMNOPQRSTU': 1 to"),
+    ("dxf2deck --name *X", BOARD_DXF, 2, "--name '*X': 1 to 18 letters"),
+    ("split --equal 1000000000000000000000 1", None, 1, "equal frames of at most 9999 pulses, "
+                                                       "more than 1000000"),
+    ("dxf2deck --tools a,b,c", BOARD_DXF, 2, "--tools a,b,c: each tool is 0.01 to 20.00 mm"),
+    ("dxf2deck --origin 1", BOARD_DXF, 2, "--origin 1: X,Y in mm, two finite numbers"),
+    ("dxf2dmc --origin inf,0", BOARD_DXF, 2, "--origin inf,0: X,Y in mm, two finite numbers"),
+    ("equidistant --chords 0", CONTOURS[0], 2, "--chords 0: a chord tolerance is a number"),
+    ("ural1 --tolerance -1", CONTOURS[0], 2, "--tolerance -1: a chord tolerance is a number"),
+    ("profile", "1 1\n2 \xe9\n", 1, "in.txt: line 2, column 3: byte 0xe9 is not ASCII"),
+    ("equidistant", "\xe9\n", 1, "in.txt: line 1, column 1: byte 0xe9 is not ASCII"),
+    ("dda 1000000000000000000000 1", None, 2, "needs a counter of 70 bits or decades, more "
+                                              "than 64: give --max"),
+    ("dda 10 5 --max 0", None, 2, "--max 0: a frame's limit is at least 1 pulse"),
+    ("cnclink --stop-at 3", "0 0\n5 5\n", 2, "--stop-at is an option of --run"),
 ]
 
 
@@ -520,8 +539,8 @@ FOUND = [
 def test_found_by_the_batch(tmp_path, command, text, status, words):
     argv = command.split()
     if text is not None:
-        path = tmp_path / ("in.dxf" if argv[0] == "dxf2deck" else "in.txt")
-        path.write_text(text, encoding="ascii")
+        path = tmp_path / ("in.dxf" if argv[0] in ("dxf2deck", "dxf2dmc") else "in.txt")
+        path.write_bytes(text.encode("latin-1"))
         argv.insert(1, str(path))
     got, err = call(argv, tmp_path, command)
     assert got == status and words in err, (got, err)

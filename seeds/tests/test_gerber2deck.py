@@ -177,3 +177,14 @@ def test_copper_wider_than_the_widest_tool_takes_a_20_mm_tool(tmp_path, run_tenz
     assert "tools W1 20.00, W2 20.00, W3 20.00 mm" in proc.stderr
     result, _ = run_tenzor(tmp_path / "wide.crd")
     assert result.returncode == 0, result.stderr
+
+
+@pytest.mark.parametrize("tools", ["0.25,0.25,0.255", "0.25,0.25,x", "0.005,0.25,0.25",
+                                   "0.25,0.25,20.01", "0.25,0.25"])
+def test_tools_off_the_cards_grid_or_range_are_a_usage_error(tmp_path, tools):
+    # 0.255 mm was rounded to 0.26 without a word
+    (tmp_path / "c.gbr").write_text(BOARD)
+    proc = g2d(tmp_path / "c.gbr", "--tools", tools, "-o", tmp_path / "c.crd")
+    assert proc.returncode == 2 and "--tools" in proc.stderr, proc.stderr
+    assert "0.01 to 20.00 mm" in proc.stderr or "needs 3 numbers" in proc.stderr
+    assert not (tmp_path / "c.crd").exists()

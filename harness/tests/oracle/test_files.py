@@ -18,6 +18,15 @@ def test_writes_and_replaces_whole(tmp_path):
     assert [p.name for p in tmp_path.iterdir()] == ["out.txt"], "a temporary file is left"
 
 
+def test_a_folder_that_is_not_there_is_named_by_the_file_asked_for(tmp_path):
+    """The error names the file asked for, not the temporary file beside it
+    (the tools print its name)."""
+    target = tmp_path / "nowhere" / "out.txt"
+    with pytest.raises(FileNotFoundError) as err:
+        write_whole(target, "x")
+    assert err.value.filename == str(target)
+
+
 def test_a_failed_write_leaves_the_old_file_and_no_temporary(tmp_path):
     target = tmp_path / "out.txt"
     write_whole(target, "good\n")
