@@ -70,11 +70,13 @@ def write_whole(path: str | Path, data: bytes | str, encoding: str = "ascii",
             os.fsync(f.fileno())
         os.chmod(tmp, 0o666 & ~_umask())
         os.replace(tmp, path)
-    except BaseException:
+    except BaseException as exc:
         try:
             os.unlink(tmp)
         except FileNotFoundError:
             pass
+        if isinstance(exc, OSError) and exc.errno is not None:
+            raise type(exc)(exc.errno, exc.strerror, str(path)) from None
         raise
     try:
         dfd = os.open(directory, os.O_RDONLY)

@@ -678,7 +678,8 @@ def _run_equidistant(args: argparse.Namespace) -> int:
         else:
             sys.stdout.write(out)
     except OSError as exc:                      # an output
-        print(f"equidistant: {exc.filename}: {exc.strerror or exc}", file=sys.stderr)
+        print(f"equidistant: {exc.filename or args.output}: {exc.strerror or exc}",
+              file=sys.stderr)
         return 2
     except ValueError as exc:
         print(f"equidistant: {args.deck}: {exc}", file=sys.stderr)
