@@ -8,7 +8,7 @@ NAME.job is the job sheet of a package; when NAME-DRILL.job lies beside it
 (or NAME.job is itself a NAME-DRILL package), the drilling tour is reported
 too. The job sheet is read as em703 reads it (docs/FILES.md): ``key = value``
 lines, a name, and for each tape its file beside the sheet and its tool; a
-size or SHA-256 it records must be the tape's. The tapes are read back with
+size or SHA-256 it records must be its file's (harness.verify's check). The tapes are read back with
 the harness's decoder and simulator (harness.tape.decode, harness.sim.simulate),
 not taken on the job sheet's word. A row of tape is 2.54 mm (a tenth of an
 inch). The travel of the board's own order is the tool's path, raised, from
@@ -24,7 +24,6 @@ holds; 2 a file cannot be opened or is not a job sheet.
 from __future__ import annotations
 
 import argparse
-import hashlib
 import math
 import re
 import sys
@@ -35,6 +34,7 @@ from harness.deck import CardError, parse_deck, sanitise
 from harness.files import ascii_text
 from harness.sim import simulate
 from harness.tape import TapeError, decode
+from harness.verify import VerifyError, package_files_agree
 
 ROW_MM = 2.54
 TAPES = ("small", "large", "cond")
@@ -61,7 +61,6 @@ class Job:
     name: str
     tapes: dict[str, Path]
     tools: dict[str, str]
-    recorded: dict[str, tuple[str | None, str | None]]   # tape -> (bytes, sha256)
 
 
 def _read(path: Path, what: str) -> bytes:
@@ -95,7 +94,7 @@ def read_job(path: Path) -> Job:
     if not _NAME.match(name):
         raise ReportError(2, f"{path}: line {no}: name {name!r} is not a package's name as "
                              f"TENZOR writes it (1 to 18 letters, digits, - and _)")
-    tapes, tools, recorded = {}, {}, {}
+    tapes, tools = {}, {}
     for t in TAPES:
         file, no = need(f"{t}.tape", f"the {t} tape's file")
         if not file or "/" in file or "\\" in file or "\0" in file or file in (".", ".."):
@@ -107,22 +106,20 @@ def read_job(path: Path) -> Job:
                                  f"(above 0, at most 1200, two decimals), not {tool!r}")
         tapes[t] = path.parent / file
         tools[t] = tool
-        recorded[t] = (keys.get(f"{t}.bytes", (None,))[0], keys.get(f"{t}.sha256", (None,))[0])
-    return Job(path, name, tapes, tools, recorded)
+    return Job(path, name, tapes, tools)
 
 
 def tape_lines(job: Job) -> tuple[list[str], dict[str, float]]:
     """One line a tape of a job, and the raised travel (mm) of each tape."""
+    tapes = {t: _read(job.tapes[t], f" (the {t} tape of {job.path})") for t in TAPES}
+    # a size or SHA-256 the sheet records must be its file's (verify's check)
+    try:
+        package_files_agree(job.path.parent, job.path.stem)
+    except VerifyError as exc:
+        raise ReportError(1, str(exc)) from None
     lines, travel = [], {}
     for t in TAPES:
-        path = job.tapes[t]
-        data = _read(path, f" (the {t} tape of {job.path})")
-        size, sha = job.recorded[t]
-        digest = hashlib.sha256(data).hexdigest()
-        if (size is not None and size != str(len(data))) or (sha is not None and sha != digest):
-            raise ReportError(1, f"{path}: not the tape the job sheet {job.path} records "
-                                 f"({len(data)} bytes, SHA-256 {digest}; the sheet says "
-                                 f"{size} bytes, {sha}): run tenzor again")
+        path, data = job.tapes[t], tapes[t]
         try:
             tape = decode(data)
         except TapeError as exc:

@@ -174,7 +174,7 @@ BROKEN = [
      "out/BOARD-large.ptp: No such file or directory (the large tape of out/BOARD.job)"),
     ("a tape of another run", lambda c: (c / "out" / "BOARD-cond.ptp").write_bytes(
         (c / "out" / "BOARD-DRILL-cond.ptp").read_bytes()), 1,
-     "out/BOARD-cond.ptp: not the tape the job sheet out/BOARD.job records"),
+     "out/BOARD-cond.ptp: not the file the job sheet out/BOARD.job records"),
     ("a tape that breaks the code", lambda c: (
         _edit(c / "out" / "BOARD.job", "small.sha256", "small.sha256x"),
         _edit(c / "out" / "BOARD.job", "small.bytes", "small.bytesx"),
