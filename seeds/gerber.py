@@ -48,6 +48,8 @@ from shapely.geometry.base import BaseGeometry
 from harness import cards
 from harness.files import write_whole
 
+from .options import mm_list
+
 #: the coordinatograph's field, mm
 FIELD_MM = 1200.0
 #: where the start point goes on the field by default (mm)
@@ -801,20 +803,10 @@ def holes_without_copper(conv: Conversion, holes: Sequence[Hole]) -> list[Hole]:
 # ---------------------------------------------------------------------------
 # The command.
 # ---------------------------------------------------------------------------
-def _pair(text: str, what: str, n: int) -> tuple[float, ...]:
-    try:
-        vals = tuple(float(v) for v in text.split(","))
-    except ValueError:
-        vals = ()
-    if len(vals) != n or not all(math.isfinite(v) for v in vals):
-        raise ValueError(f"{what} needs {n} numbers in mm separated by commas, not {text!r}")
-    return vals
-
-
 def _run(args: argparse.Namespace) -> int:
     try:
-        start = _pair(args.start, "--start", 2) if args.start else START_MM
-        tools = _pair(args.tools, "--tools", 3) if args.tools else None
+        start = mm_list(args.start, "--start", 2) if args.start else START_MM
+        tools = mm_list(args.tools, "--tools", 3) if args.tools else None
         if tools is not None and not all(MIN_FEATURE_MM <= t <= MAX_TOOL_MM
                                          and abs(t * 100 - round(t * 100)) < 1e-6 for t in tools):
             raise ValueError(f"--tools {args.tools}: each tool is {MIN_FEATURE_MM:.2f} to "

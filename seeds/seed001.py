@@ -65,6 +65,7 @@ from harness import cards
 from harness.files import write_whole
 
 from .contour import FIELD_MM, ArcEl, Seg, arc_chords, contour_cards, distance_to
+from .options import mm_list
 
 #: Chord tolerance (mm) for polyline bulges.
 BULGE_TOL = 0.005
@@ -591,17 +592,6 @@ def deck_text(conv: Conversion, name: str, start_mm: Point | None = None,
     return cards.deck([cards.CardPackage(name, body)], job=job)
 
 
-def _pair(text: str, option: str) -> Point:
-    """X,Y of an option, two finite numbers of mm; ValueError naming it."""
-    try:
-        x, y = (float(v) for v in text.split(","))
-    except ValueError:
-        x = y = math.nan
-    if not (math.isfinite(x) and math.isfinite(y)):
-        raise ValueError(f"{option} {text}: X,Y in mm, two finite numbers, not {text!r}")
-    return x, y
-
-
 class Unreadable(Exception):
     """A file that is not a DXF drawing ezdxf can read: the message names it."""
 
@@ -628,19 +618,15 @@ def open_drawing(path: str) -> Any:
 
 def _run(args: argparse.Namespace) -> int:
     try:
-        origin = _pair(args.origin, "--origin") if args.origin else (0.0, 0.0)
-        start = _pair(args.start, "--start") if args.start else None
-        try:
-            tools = tuple(Decimal(v) for v in args.tools.split(",")) if args.tools else None
-        except ArithmeticError:                 # decimal.InvalidOperation: not a number
-            tools = (Decimal("NaN"),) * 3
-        if tools is not None and len(tools) != 3:
-            raise ValueError("--tools needs W1,W2,W3")
-        if tools is not None and not all(t.is_finite() and Decimal("0.01") <= t <= 20
+        origin = mm_list(args.origin, "--origin", 2) if args.origin else (0.0, 0.0)
+        start = mm_list(args.start, "--start", 2) if args.start else None
+        tools = (tuple(Decimal(str(t)) for t in mm_list(args.tools, "--tools", 3))
+                 if args.tools else None)
+        if tools is not None and not all(Decimal("0.01") <= t <= 20
                                          and t == t.quantize(Decimal("0.01")) for t in tools):
             raise ValueError(f"--tools {args.tools}: each tool is 0.01 to 20.00 mm, in whole "
                              f"0.01 mm")
-        if start is not None and not all(math.isfinite(v) and 0 <= v <= FIELD_MM for v in start):
+        if start is not None and not all(0 <= v <= FIELD_MM for v in start):
             raise ValueError(f"--start {args.start}: the start point's place on the field is "
                              f"X,Y, each 0 to {FIELD_MM:g} mm")
         tol = check_tolerance(args.tolerance)

@@ -44,6 +44,7 @@ from harness.files import write_whole
 
 from . import seed001
 from .contour import ArcEl, Seg, arc_chords
+from .options import mm_list
 from .seed001 import Item, Label, Point, TooBig
 
 #: Default counts of the axes' encoders per mm (1 count = 1 µm).
@@ -446,7 +447,7 @@ def _run(args: argparse.Namespace) -> int:
             raise ValueError(f"--speed {speed:g} mm/s is not above 0 and at most 10000")
         if args.tool_bit not in BITS:
             raise ValueError(f"--tool-bit {args.tool_bit} is not one of 1-8")
-        origin = seed001._pair(args.origin, "--origin") if args.origin else (0.0, 0.0)
+        origin = mm_list(args.origin, "--origin", 2) if args.origin else (0.0, 0.0)
     except (ValueError, ArithmeticError) as exc:
         print(f"dxf2dmc: {exc}", file=sys.stderr)
         return 2

@@ -507,10 +507,10 @@ FOUND = [
     ("ural1 --feed 0", CONTOURS[0], 2, "--feed 0: a feed is a number of mm/min above 0"),
     # dxf2deck's options were read but not checked: a ValueError or an
     # OverflowError when the cards were written
-    ("dxf2deck --tools 0.5,nan,1e308", BOARD_DXF, 2, "--tools 0.5,nan,1e308: each tool is"),
+    ("dxf2deck --tools 0.5,nan,1e308", BOARD_DXF, 2, "--tools 0.5,nan,1e308: 3 finite numbers of mm"),
     ("dxf2deck --start 2147483648,1", BOARD_DXF, 2, "--start 2147483648,1: the start point's"),
-    ("dxf2deck --start inf,0", BOARD_DXF, 2, "--start inf,0: X,Y in mm, two finite numbers"),
-    ("dxf2deck --origin nan,0", BOARD_DXF, 2, "--origin nan,0: X,Y in mm, two finite"),
+    ("dxf2deck --start inf,0", BOARD_DXF, 2, "--start inf,0: 2 finite numbers of mm"),
+    ("dxf2deck --origin nan,0", BOARD_DXF, 2, "--origin nan,0: 2 finite numbers of mm"),
     # a point of 1e308 mm: an OverflowError when its chords became cards
     ("profile", "-1e308 0\n33.14 -18.495\n35.88 47.374\n", 1, "line 1: '-1e308 0' is off"),
     # found by reading the pages against the tools: a traceback (a name the
@@ -521,9 +521,9 @@ FOUND = [
     ("dxf2deck --name *X", BOARD_DXF, 2, "--name '*X': 1 to 18 letters"),
     ("split --equal 1000000000000000000000 1", None, 1, "equal frames of at most 9999 pulses, "
                                                        "more than 1000000"),
-    ("dxf2deck --tools a,b,c", BOARD_DXF, 2, "--tools a,b,c: each tool is 0.01 to 20.00 mm"),
-    ("dxf2deck --origin 1", BOARD_DXF, 2, "--origin 1: X,Y in mm, two finite numbers"),
-    ("dxf2dmc --origin inf,0", BOARD_DXF, 2, "--origin inf,0: X,Y in mm, two finite numbers"),
+    ("dxf2deck --tools a,b,c", BOARD_DXF, 2, "--tools a,b,c: 3 finite numbers of mm"),
+    ("dxf2deck --origin 1", BOARD_DXF, 2, "--origin 1: 2 finite numbers of mm"),
+    ("dxf2dmc --origin inf,0", BOARD_DXF, 2, "--origin inf,0: 2 finite numbers of mm"),
     ("equidistant --chords 0", CONTOURS[0], 2, "--chords 0: a chord tolerance is a number"),
     ("ural1 --tolerance -1", CONTOURS[0], 2, "--tolerance -1: a chord tolerance is a number"),
     ("profile", "1 1\n2 \xe9\n", 1, "in.txt: line 2, column 3: byte 0xe9 is not ASCII"),

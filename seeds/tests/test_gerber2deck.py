@@ -186,5 +186,5 @@ def test_tools_off_the_cards_grid_or_range_are_a_usage_error(tmp_path, tools):
     (tmp_path / "c.gbr").write_text(BOARD)
     proc = g2d(tmp_path / "c.gbr", "--tools", tools, "-o", tmp_path / "c.crd")
     assert proc.returncode == 2 and "--tools" in proc.stderr, proc.stderr
-    assert "0.01 to 20.00 mm" in proc.stderr or "needs 3 numbers" in proc.stderr
+    assert "0.01 to 20.00 mm" in proc.stderr or "3 finite numbers of mm" in proc.stderr
     assert not (tmp_path / "c.crd").exists()
