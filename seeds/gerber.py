@@ -414,7 +414,7 @@ def _object_text(o) -> str:
 MAX_NUMBER_MM = 1e7
 
 
-def _finite(o) -> bool:
+def _in_range(o) -> bool:
     """Whether every coordinate of a graphic object and every size of its
     aperture is a finite number (gerbonara reads "nan" and "inf" as numbers)
     of at most MAX_NUMBER_MM."""
@@ -444,7 +444,7 @@ def convert(g, holes: Sequence[Hole] = (), tools: tuple[float, float, float] | N
         if isinstance(o, Flash) and o.aperture is None:
             raise Refused(f"a flash (D03) at {o.x:.3f}, {o.y:.3f} mm with no aperture "
                           f"selected before it (a D10 or higher that an AD defines)")
-        if not _finite(o):
+        if not _in_range(o):
             raise Refused(f"{_object_text(o)}: a coordinate or an aperture's size is not "
                           f"a finite number of at most {MAX_NUMBER_MM:.0f} mm (10 km)")
     n = len(objs)
