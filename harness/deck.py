@@ -58,11 +58,12 @@ class Pad:
 
 @dataclass(frozen=True)
 class Conductor:
-    """An L card and its + cards."""
+    """An L card and its + cards; ``point_cards``: the card of each point."""
 
     card: int
     w: int
     points: tuple[tuple[int, int], ...]
+    point_cards: tuple[int, ...] = field(default=(), compare=False)
 
 
 @dataclass(frozen=True)
@@ -141,8 +142,9 @@ class CardError(ValueError):
     """A card the strict parser does not understand."""
 
     def __init__(self, card: int, message: str) -> None:
-        super().__init__(f"card {card}: {message}")
-        self.card = card
+        super().__init__(f"card {card}: {message}" if card else
+                         f"at the end of the deck: {message}")
+        self.card = card            # 0: a fault of the deck as a whole, at its end
 
 
 _REAL = re.compile(r"^ *([+-]?)(\d*)(\.?)(\d*) *$")
@@ -324,16 +326,17 @@ class _Builder:
         self.circles: list[Circle] = []
         self.arcs: list[ArcCard] = []
         self.m: dict[str, list[tuple[int, Frame]]] = {k: [] for k in LAYERS}
-        self.open: tuple[int, int, list[tuple[int, int]]] | None = None  # card, W, pts
+        self.open: tuple[int, int, list[tuple[int, int]], list[int]] | None = None
+        # ^ the L card, W, the points and the card of each
 
     def close(self) -> None:
         if self.open is None:
             return
-        no, w, pts = self.open
+        no, w, pts, nos = self.open
         self.open = None
         if len(set(pts)) < 2:
             raise CardError(no, "conductor of zero length")
-        self.conductors.append(Conductor(no, w, tuple(pts)))
+        self.conductors.append(Conductor(no, w, tuple(pts), tuple(nos)))
 
     def card(self, no: int, c: str) -> None:
         kind = c[0]
@@ -395,13 +398,14 @@ class _Builder:
         w = self.w3 if w is None else w
         if w < self.w3:
             raise CardError(no, "conductor narrower than its tool")
-        self.open = (no, w, [(real(c, 11, 20, no), real(c, 21, 30, no))])
+        self.open = (no, w, [(real(c, 11, 20, no), real(c, 21, 30, no))], [no])
 
     def plus_card(self, no: int, c: str) -> None:
         _blank(c, [(2, 10), (31, 72)], no)
         if self.open is None:
             raise CardError(no, "+ card with no conductor open")
         self.open[2].append((real(c, 11, 20, no), real(c, 21, 30, no)))
+        self.open[3].append(no)
 
     def _direction(self, no: int, c: str) -> bool:
         d = _cols(c, 2, 2)
@@ -532,5 +536,6 @@ def parse_deck(text: str) -> list[Package]:
             continue
         builder.card(no, card)
     if state != "done":
-        raise CardError(0, "the deck does not end with an E card")
+        raise CardError(0, "the deck ends without the E card (the last package must end "
+                           "with a card of E in column 1)")
     return packages

@@ -870,9 +870,8 @@ def verify(deck_text: str, tapedir: str | Path, tol: int = TOLERANCE,
     try:
         packages = parse_deck(deck_text)
     except CardError as exc:
-        where = f"card {exc.card}" if exc.card else "the deck"
-        raise VerifyError(f"{deck_name}: {where}: the harness cannot read this deck, so "
-                          f"there is nothing to verify against: {exc}") from None
+        raise VerifyError(f"{deck_name}: {exc} (the harness cannot read this deck, so "
+                          f"there is nothing to verify against)") from None
     seen: dict[str, int] = {}
     for p in packages:
         if p.file_name in seen:

@@ -125,8 +125,9 @@ def _offset(e: Element, d: float) -> Element:
     # the left of a counter-clockwise arc is its centre: the radius shrinks
     r1 = e.r + (d if e.cw else -d)
     if r1 <= 1e-9:
-        raise ValueError(f"the arc about ({e.cx:g}, {e.cy:g}) of radius {e.r:g} is "
-                         f"tighter than the cutter's radius {abs(d):g}")
+        raise ValueError(f"its radius {e.r:.3f} mm about ({e.cx:g}, {e.cy:g}) is tighter "
+                         f"than the cutter's radius {abs(d):g} mm (this arc allows a cutter of "
+                         f"less than {2 * e.r:.3f} mm)")
     k = r1 / e.r
     return replace(e, x0=e.cx + (e.x0 - e.cx) * k, y0=e.cy + (e.y0 - e.cy) * k,
                    x1=e.cx + (e.x1 - e.cx) * k, y1=e.cy + (e.y1 - e.cy) * k)
@@ -179,7 +180,14 @@ FIELD_MM = 1200.0
 MAX_CHORDS = 1_000_000
 
 
-def equidistant(contour: Sequence[Element], radius: float, outside: bool = True) -> list[Element]:
+def _name(labels: Sequence[str] | None, i: int) -> str:
+    """Element i (0-based) of a contour in a message: its label when the
+    contour was read from cards (:func:`contour_and_cards`)."""
+    return labels[i] if labels else f"element {i + 1}"
+
+
+def equidistant(contour: Sequence[Element], radius: float, outside: bool = True,
+                labels: Sequence[str] | None = None) -> list[Element]:
     """The path of the centre of a cutter of ``radius`` running along a
     closed contour of lines and arcs, outside it (or inside).
 
@@ -191,12 +199,18 @@ def equidistant(contour: Sequence[Element], radius: float, outside: bool = True)
     and so do near-tangent ones whose gap is under :data:`SNAP_MM`.
     A concave arc tighter than the cutter, or an element that vanishes
     between two overlapping neighbours, is a ValueError (the paper's flange
-    has neither).
+    has neither).  ``labels`` name the elements in those messages (the
+    cards that drew them; default "element N").
     """
     check_closed(contour)
     ccw = signed_area(contour) > 0
     d = radius if (ccw != outside) else -radius  # + = to the left
-    moved = [_offset(e, d) for e in contour]
+    moved: list[Element] = []
+    for i, e in enumerate(contour):
+        try:
+            moved.append(_offset(e, d))
+        except ValueError as exc:
+            raise ValueError(f"{_name(labels, i)}: {exc}") from None
     n = len(contour)
     starts = [_start(m) for m in moved]
     ends = [_end(m) for m in moved]
@@ -217,7 +231,8 @@ def equidistant(contour: Sequence[Element], radius: float, outside: bool = True)
         else:                        # turning toward it: the moved elements overlap
             cands = _intersections(moved[i], moved[j])
             if not cands:
-                raise ValueError(f"the moved elements {i + 1} and {j + 1} do not meet")
+                raise ValueError(f"{_name(labels, i)} and {_name(labels, j)}, moved by the "
+                                 f"cutter's radius, do not meet")
             x = min(cands, key=lambda p: math.dist(p, (vx, vy)))
             ends[i] = starts[j] = x
     out: list[Element] = []
@@ -226,9 +241,11 @@ def equidistant(contour: Sequence[Element], radius: float, outside: bool = True)
         if isinstance(new, Seg):
             (ux, uy), (wx, wy) = m.start_dir(), (new.x1 - new.x0, new.y1 - new.y0)
             if ux * wx + uy * wy <= 1e-9:
-                raise ValueError(f"element {i + 1} vanishes in the equidistant")
+                raise ValueError(f"{_name(labels, i)} vanishes in the equidistant "
+                             f"(the cutter is too large for it)")
         elif isinstance(m, ArcEl) and new.sweep > m.sweep + 0.5:   # wrapped round
-            raise ValueError(f"element {i + 1} vanishes in the equidistant")
+            raise ValueError(f"{_name(labels, i)} vanishes in the equidistant "
+                             f"(the cutter is too large for it)")
         out.append(new)
         if corners[i] is not None:
             out.append(corners[i])
@@ -346,28 +363,54 @@ def contour_from_package(pkg) -> list[Element]:
     """The conductors (L/+) and arcs (A) of a parsed deck package
     (:class:`harness.deck.Package`), in card order, as one chain of
     elements in mm.  Circles, pads and M cards are not part of a contour."""
+    return contour_and_cards(pkg)[0]
+
+
+def contour_and_cards(pkg) -> tuple[list[Element], list[str]]:
+    """:func:`contour_from_package`, and for each element the card that draws
+    it, for messages: "the line to card 7" (the L or + card where a straight
+    element ends) or "the arc of card 8"."""
     items = [(c.card, c) for c in pkg.conductors] + [(a.card, a) for a in pkg.arcs]
     out: list[Element] = []
+    labels: list[str] = []
     for _, item in sorted(items, key=lambda t: t[0]):
         if hasattr(item, "points"):
             pts = [(x / 100, y / 100) for x, y in item.points]
-            out += [Seg(*p, *q) for p, q in zip(pts, pts[1:]) if p != q]
+            nos = item.point_cards or (item.card,) * len(pts)
+            for p, q, no in zip(pts, pts[1:], nos[1:]):
+                if p != q:
+                    out.append(Seg(*p, *q))
+                    labels.append(f"the line to card {no}")
         else:
             out.append(ArcEl(item.xc / 100, item.yc / 100, item.xs / 100, item.ys / 100,
                              item.xe / 100, item.ye / 100, item.clockwise))
-    return out
+            labels.append(f"the arc of card {item.card}")
+    return out, labels
 
 
-def close_chain(elements: Sequence[Element], eps: float = 0.015) -> list[Element]:
+def package_contour(pkg) -> tuple[list[Element], list[str]]:
+    """The closed contour of a package's L/+ and A cards (:func:`close_chain`)
+    and the label of each element, for :func:`equidistant`'s messages."""
+    elements, labels = contour_and_cards(pkg)
+    return close_chain(elements, labels=labels), labels
+
+
+def close_chain(elements: Sequence[Element], eps: float = 0.015,
+                labels: Sequence[str] | None = None) -> list[Element]:
     """Snap a chain read from cards so that it closes exactly (each element
     ends where the next starts); ValueError if two ends are more than
-    ``eps`` mm apart: then it is not one closed contour."""
+    ``eps`` mm apart: then it is not one closed contour.  ``labels`` name
+    the elements in that message (:func:`contour_and_cards`)."""
     out = list(elements)
     if not out:
-        raise ValueError("no lines or arcs: no contour")
+        raise ValueError("no lines or arcs (L/+ or A cards): no contour")
     for i, e in enumerate(out):
-        nxt = out[(i + 1) % len(out)]
+        j = (i + 1) % len(out)
+        nxt = out[j]
         if math.dist(_end(e), _start(nxt)) > eps:
-            raise ValueError(f"element {i + 1} ends at ({e.x1:.2f}, {e.y1:.2f}), the next "
-                             f"starts at ({nxt.x0:.2f}, {nxt.y0:.2f}): not a closed contour")
+            raise ValueError(f"{_name(labels, i)} ends at ({e.x1:.2f}, {e.y1:.2f}) but "
+                             f"{_name(labels, j)} starts at ({nxt.x0:.2f}, {nxt.y0:.2f}): "
+                             f"not a closed contour (each line or arc, in card order, must "
+                             f"start within {eps:g} mm of where the one before it ends, "
+                             f"and the last end where the first starts)")
     return [e.with_ends(_start(e), _start(out[(i + 1) % len(out)])) for i, e in enumerate(out)]

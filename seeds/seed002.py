@@ -42,8 +42,8 @@ from harness import cards
 from harness.deck import parse_deck
 from harness.files import ascii_text, write_whole
 
-from .contour import (FIELD_MM, MAX_CHORDS, ArcEl, Element, Seg, close_chain, contour_cards,
-                      contour_from_package, equidistant, sample, units)
+from .contour import (FIELD_MM, MAX_CHORDS, ArcEl, Element, Seg, contour_cards, equidistant,
+                      package_contour, sample, units)
 
 Point = tuple[float, float]
 Number = Union[float, Fraction]
@@ -518,8 +518,11 @@ def equidistant_deck(text: str, cutter_mm: float, outside: bool = True,
 
     out = []
     for pkg in parse_deck(text):
-        contour = close_chain(contour_from_package(pkg))
-        path = equidistant(contour, cutter_mm / 2, outside)
+        try:
+            contour, labels = package_contour(pkg)
+            path = equidistant(contour, cutter_mm / 2, outside, labels)
+        except ValueError as exc:
+            raise ValueError(f"package {pkg.name.strip()}: {exc}") from None
         x0, y0 = (cards.units(v) for v in pkg.start_mm)
         p = cards.p_card(x0, y0, *pkg.tools, pkg.dmax, pkg.scale, pkg.code, pkg.order)
         name = pkg.name.strip()[:15] + "-EQ"
@@ -669,7 +672,7 @@ def _run_equidistant(args: argparse.Namespace) -> int:
         if args.svg:
             layers = []
             for pkg in parse_deck(text):
-                contour = close_chain(contour_from_package(pkg))
+                contour = package_contour(pkg)[0]     # closed: equidistant_deck read it
                 layers += [(contour, "black"),
                            (equidistant(contour, args.cutter / 2, not args.inside), "#c00")]
             write_whole(args.svg, contours_svg(layers), inputs=[args.deck])

@@ -40,8 +40,7 @@ from pathlib import Path
 from harness.deck import parse_deck
 from harness.files import ascii_text, write_whole
 
-from .contour import ArcEl, Element, Seg, arc_chords, close_chain, contour_from_package, \
-    equidistant, units
+from .contour import ArcEl, Element, Seg, arc_chords, equidistant, package_contour, units
 from .seed002 import (CODE_5121, EVEN_SHIFT_ROWS, FLANGE_CUTTER_MM, ROWS_PER_FRAME, Frame5121,
                       cutter_problem, frame_rows_5121, punch_5121, read_5121, tetrad)
 from .seed004 import DOCUMENT_MAX, split_move
@@ -220,9 +219,12 @@ def ural1_runs(text: str, path_given: bool = False, cutter_mm: float = FLANGE_CU
     """Every package of a deck through the whole chain; one tape each."""
     out = []
     for pkg in parse_deck(text):
-        contour = close_chain(contour_from_package(pkg))
-        path = contour if path_given else equidistant(contour, cutter_mm / 2)
-        secs = sections(path, tol, feed, max_pulses)
+        try:
+            contour, labels = package_contour(pkg)
+            path = contour if path_given else equidistant(contour, cutter_mm / 2, True, labels)
+            secs = sections(path, tol, feed, max_pulses)
+        except ValueError as exc:
+            raise ValueError(f"package {pkg.name.strip()}: {exc}") from None
         frames = [f for s in secs for f in s.frames]
         for k, f in enumerate(frames):
             frame_rows_translated(f, explain if (explain is not None and k == 0) else None)

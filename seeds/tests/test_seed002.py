@@ -332,6 +332,58 @@ def test_equidistant_command(tmp_path: Path) -> None:
     assert main(["equidistant", str(tmp_path / "missing.crd")]) == 2
 
 
+def _deck(name: str, *cards: tuple[str, ...]) -> str:
+    """A one-package deck; each card its letter and fields (X, Y, ...)."""
+    rows = [c[0].ljust(10) + "".join(f"{v:>10}" for v in c[1:]) for c in cards]
+    return "\n".join([name, *rows, "E"]) + "\n"
+
+
+# the notch: a 40 mm square with a slot 1 mm wide down to y = 20 (card 7 its floor)
+NOTCH_CARDS = [("L", "0.00", "0.00"), ("+", "40.00", "0.00"), ("+", "40.00", "40.00"),
+               ("+", "21.00", "40.00"), ("+", "21.00", "20.00"), ("+", "20.00", "20.00"),
+               ("+", "20.00", "40.00"), ("+", "0.00", "40.00"), ("+", "0.00", "0.00")]
+NOTCH = _deck("NOTCH", *NOTCH_CARDS)
+FLANGE = (ROOT / "examples" / "flange.crd").read_text()
+
+
+@pytest.mark.parametrize("command, deck, message", [
+    (["ural1"], FLANGE.replace("+              87.00    103.00", "+              87.00    104.00"),
+     "package FLANGE-TABLE5: the line to card 16 ends at (87.00, 104.00) but the arc of card 17 "
+     "starts at (87.00, 103.00): not a closed contour (each line or arc, in card order, must "
+     "start within 0.015 mm of where the one before it ends, and the last end where the first "
+     "starts)"),
+    (["equidistant"], _deck("NOTCH", *NOTCH_CARDS[:-1], ("+", "0.00", "1.00")),
+     "package NOTCH: the line to card 10 ends at (0.00, 1.00) but the line to card 3 starts at "
+     "(0.00, 0.00): not a closed contour (each line or arc, in card order, must start within "
+     "0.015 mm of where the one before it ends, and the last end where the first starts)"),
+    (["equidistant", "--cutter", "4"], NOTCH,
+     "package NOTCH: the line to card 7 vanishes in the equidistant (the cutter is too large "
+     "for it)"),
+    (["ural1", "--cutter", "2"], NOTCH.replace("NOTCH", "SLOT"),
+     "package SLOT: the line to card 7 vanishes in the equidistant (the cutter is too large "
+     "for it)"),
+    (["equidistant", "--cutter", "60"], FLANGE,
+     "package FLANGE-TABLE5: the arc of card 27: its radius 25.861 mm about (59.35, -10.7) is "
+     "tighter than the cutter's radius 30 mm (this arc allows a cutter of less than 51.723 mm)"),
+    (["equidistant", "--cutter", "51.72"], FLANGE,
+     "package FLANGE-TABLE5: the arc of card 26 and the arc of card 27, moved by the cutter's "
+     "radius, do not meet"),
+    (["ural1"], "PADS\nD              10.00     10.00    1.00\nE\n",
+     "package PADS: no lines or arcs (L/+ or A cards): no contour"),
+    (["equidistant"], NOTCH[:-2],
+     "at the end of the deck: the deck ends without the E card (the last package must end with "
+     "a card of E in column 1)"),
+])
+def test_a_contour_that_cannot_be_cut_names_its_package_and_cards(
+        tmp_path: Path, capsys, command: list[str], deck: str, message: str) -> None:
+    """ural1 and equidistant name the package and the cards (the deck's line
+    numbers) of the lines and arcs that do not close or cannot be cut."""
+    path = tmp_path / "part.crd"
+    path.write_text(deck)
+    assert main([*command, str(path)]) == 1
+    assert capsys.readouterr().err == f"{command[0]}: {path}: {message}\n"
+
+
 def test_profile_paper_command(capsys) -> None:
     assert main(["profile", "--paper"]) == 0
     out = capsys.readouterr().out

@@ -387,14 +387,20 @@ def test_command_exit_status_and_deterministic_output(board, tmp_path, capsys) -
 @pytest.mark.parametrize("args,fragment", [
     (["verify", "/nonexistent.crd", "."], "/nonexistent.crd: No such file"),
     (["verify", "{deck}", "/nonexistent"], "/nonexistent: not a directory"),
-    (["verify", "{bad}", "."], "card 2: the harness cannot read this deck"),
+    (["verify", "{bad}", "."], "bad.crd: card 2: unknown card type 'Q' in column 1 (the harness "
+                               "cannot read this deck, so there is nothing to verify against)"),
+    (["verify", "{noend}", "."], "noend.crd: at the end of the deck: the deck ends without the "
+                                 "E card (the last package must end with a card of E in "
+                                 "column 1) (the harness cannot read this deck"),
     (["verify", "{deck}", ".", "--tolerance", "0.001"], "--tolerance must be whole 0.01 mm"),
     (["verify", "{deck}"], "usage:"),
 ])
 def test_command_usage_and_io_errors_exit_2(tmp_path, capsys, args, fragment) -> None:
     (tmp_path / "deck.crd").write_text(BOARD)
     (tmp_path / "bad.crd").write_text("B\nQ\nE\n")
-    argv = [a.format(deck=tmp_path / "deck.crd", bad=tmp_path / "bad.crd") for a in args]
+    (tmp_path / "noend.crd").write_text(BOARD[:BOARD.rindex("E")])
+    argv = [a.format(deck=tmp_path / "deck.crd", bad=tmp_path / "bad.crd",
+                     noend=tmp_path / "noend.crd") for a in args]
     assert main(argv) == 2
     assert fragment in capsys.readouterr().err
 
