@@ -12,6 +12,7 @@ the dict.  Exit status: 0 done, 1 the input had errors, 2 usage or I/O.
 from __future__ import annotations
 
 import argparse
+import functools
 import sys
 from collections.abc import Callable, Sequence
 from pathlib import Path
@@ -109,9 +110,12 @@ SUBCOMMANDS: dict[str, Callable[[argparse._SubParsersAction], None]] = {
 
 def build_parser() -> argparse.ArgumentParser:
     """The argument parser with every subcommand of ``SUBCOMMANDS``."""
-    parser = argparse.ArgumentParser(prog="python -m harness",
+    # abbreviations off (--tol is not --tolerance): an option is its whole name
+    parser = argparse.ArgumentParser(prog="python -m harness", allow_abbrev=False,
                                      description="The EM-703 oracle: decode a tape, verify tapes against a deck, check the FORTRAN 77 of legacy/")
-    sub = parser.add_subparsers(dest="command", metavar="COMMAND", required=True)
+    sub = parser.add_subparsers(dest="command", metavar="COMMAND", required=True,
+                                parser_class=functools.partial(argparse.ArgumentParser,
+                                                               allow_abbrev=False))
     for add in SUBCOMMANDS.values():
         add(sub)
     return parser
@@ -121,7 +125,10 @@ def main(argv: Sequence[str] | None = None) -> int:
     """Run one subcommand; returns the exit status (2 on a usage error)."""
     parser = build_parser()
     try:
-        args = parser.parse_args(argv)
+        args, extra = parser.parse_known_args(argv)
+        if extra:                      # said by the subcommand, with its own usage line
+            sub = next(a for a in parser._actions if isinstance(a, argparse._SubParsersAction))
+            sub.choices[args.command].error(f"unrecognized arguments: {' '.join(extra)}")
     except SystemExit as exc:          # argparse: --help (0) or usage error (2)
         return int(exc.code or 0)
     return int(args.func(args))

@@ -12,6 +12,7 @@ import sys
 from collections.abc import Callable, Sequence
 
 from . import gerber, seed001, seed001_dmc, seed002, seed003, seed004, tapereport, ural1
+from .options import Parser
 
 #: name -> function adding the subcommand's parser, in the documents' order.
 SUBCOMMANDS: dict[str, Callable[[argparse._SubParsersAction], None]] = {
@@ -32,7 +33,7 @@ SUBCOMMANDS: dict[str, Callable[[argparse._SubParsersAction], None]] = {
 
 def build_parser() -> argparse.ArgumentParser:
     """The argument parser with every subcommand of ``SUBCOMMANDS``."""
-    parser = argparse.ArgumentParser(
+    parser = Parser(
         prog="python -m seeds",
         description="The neighbouring systems of seeds 001-004 (docs/SOURCES.md)")
     sub = parser.add_subparsers(dest="command", metavar="COMMAND", required=True)
@@ -45,7 +46,10 @@ def main(argv: Sequence[str] | None = None) -> int:
     """Run one subcommand; returns the exit status (2 on a usage error)."""
     parser = build_parser()
     try:
-        args = parser.parse_args(argv)
+        args, extra = parser.parse_known_args(argv)
+        if extra:                      # said by the subcommand, with its own usage line
+            sub = next(a for a in parser._actions if isinstance(a, argparse._SubParsersAction))
+            sub.choices[args.command].error(f"unrecognized arguments: {' '.join(extra)}")
     except SystemExit as exc:          # argparse: --help (0) or usage error (2)
         return int(exc.code or 0)
     return int(args.func(args))

@@ -48,7 +48,7 @@ from shapely.geometry.base import BaseGeometry
 from harness import cards
 from harness.files import write_whole
 
-from .options import mm_list
+from .options import Parser, mm_list
 
 #: the coordinatograph's field, mm
 FIELD_MM = 1200.0
@@ -897,7 +897,7 @@ def add_gerber2deck(sub: argparse._SubParsersAction) -> None:
 
 def main(argv: Sequence[str] | None = None) -> int:
     """The console script ``gerber2deck``."""
-    parser = argparse.ArgumentParser(prog="gerber2deck", description=HELP)
+    parser = Parser(prog="gerber2deck", description=HELP)
     _arguments(parser)
     try:
         args = parser.parse_args(argv)

@@ -65,7 +65,7 @@ from harness import cards
 from harness.files import write_whole
 
 from .contour import FIELD_MM, ArcEl, Seg, arc_chords, contour_cards, distance_to
-from .options import mm_list
+from .options import Parser, mm_list
 
 #: Chord tolerance (mm) for polyline bulges.
 BULGE_TOL = 0.005
@@ -702,7 +702,7 @@ def add_dxf2deck(sub: argparse._SubParsersAction) -> None:
 
 def main(argv: Sequence[str] | None = None) -> int:
     """The console script ``dxf2deck``: ``python -m seeds dxf2deck`` alone."""
-    parser = argparse.ArgumentParser(prog="dxf2deck", description=DXF2DECK_HELP)
+    parser = Parser(prog="dxf2deck", description=DXF2DECK_HELP)
     _dxf2deck_arguments(parser)
     try:
         args = parser.parse_args(argv)

@@ -44,7 +44,7 @@ from harness.files import write_whole
 
 from . import seed001
 from .contour import ArcEl, Seg, arc_chords
-from .options import mm_list
+from .options import Parser, mm_list
 from .seed001 import Item, Label, Point, TooBig
 
 #: Default counts of the axes' encoders per mm (1 count = 1 µm).
@@ -514,7 +514,7 @@ def add_dxf2dmc(sub: argparse._SubParsersAction) -> None:
 
 def main(argv: Sequence[str] | None = None) -> int:
     """The console script ``dxf2dmc``: ``python -m seeds dxf2dmc`` alone."""
-    parser = argparse.ArgumentParser(prog="dxf2dmc", description=DXF2DMC_HELP)
+    parser = Parser(prog="dxf2dmc", description=DXF2DMC_HELP)
     _arguments(parser)
     try:
         args = parser.parse_args(argv)

@@ -384,6 +384,27 @@ def test_a_contour_that_cannot_be_cut_names_its_package_and_cards(
     assert capsys.readouterr().err == f"{command[0]}: {path}: {message}\n"
 
 
+def test_options_are_taken_only_by_their_whole_name(capsys) -> None:
+    """No abbreviations (``--chord`` for ``--chords``), in every subcommand and
+    in the console scripts: an option added later cannot change what a
+    command line meant."""
+    from seeds import gerber, seed001, seed001_dmc
+    from seeds.__main__ import build_parser
+    parser = build_parser()
+    sub = next(a for a in parser._actions if a.choices and "ural1" in a.choices)
+    assert not parser.allow_abbrev and len(sub.choices) >= 12
+    assert [n for n, p in sub.choices.items() if p.allow_abbrev] == []
+    flange = str(ROOT / "examples" / "flange.crd")
+    assert main(["equidistant", flange, "--chord", "0.02"]) == 2
+    err = capsys.readouterr().err          # said by the subcommand, under its own usage
+    assert err.startswith("usage: python -m seeds equidistant ")
+    assert err.endswith("python -m seeds equidistant: error: unrecognized arguments: "
+                        "--chord 0.02\n")
+    for script in (gerber.main, seed001.main, seed001_dmc.main):
+        assert script(["--out", "x.crd", "in"]) == 2
+        assert "unrecognized arguments: --out" in capsys.readouterr().err
+
+
 def test_profile_paper_command(capsys) -> None:
     assert main(["profile", "--paper"]) == 0
     out = capsys.readouterr().out

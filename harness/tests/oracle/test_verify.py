@@ -392,6 +392,8 @@ def test_command_exit_status_and_deterministic_output(board, tmp_path, capsys) -
     (["verify", "{noend}", "."], "noend.crd: at the end of the deck: the deck ends without the "
                                  "E card (the last package must end with a card of E in "
                                  "column 1) (the harness cannot read this deck"),
+    (["verify", "{deck}", ".", "--tol", "0.05"], "python -m harness verify: error: unrecognized arguments: "
+                                                   "--tol 0.05"),
     (["verify", "{deck}", ".", "--tolerance", "0.001"], "--tolerance must be whole 0.01 mm"),
     (["verify", "{deck}"], "usage:"),
 ])
