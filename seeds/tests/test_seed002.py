@@ -338,7 +338,8 @@ def _deck(name: str, *cards: tuple[str, ...]) -> str:
     return "\n".join([name, *rows, "E"]) + "\n"
 
 
-# the notch: a 40 mm square with a slot 1 mm wide down to y = 20 (card 7 its floor)
+# the notch: a 40 mm square with a slot 1 mm wide down to y = 20 (card 7 its floor);
+# docs/SEED002-URAL1.md quotes its message
 NOTCH_CARDS = [("L", "0.00", "0.00"), ("+", "40.00", "0.00"), ("+", "40.00", "40.00"),
                ("+", "21.00", "40.00"), ("+", "21.00", "20.00"), ("+", "20.00", "20.00"),
                ("+", "20.00", "40.00"), ("+", "0.00", "40.00"), ("+", "0.00", "0.00")]

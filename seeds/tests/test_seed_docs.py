@@ -120,8 +120,8 @@ def test_tape_codes_page_deviation_table_is_what_dda_computes() -> None:
 
 
 def test_quoted_messages_are_the_tools(tmp_path) -> None:
-    """The messages SEED001-DXF.md and SEED003-CNC-LINK.md quote, and
-    README's split | punch5121 pipeline's ten frames."""
+    """The messages SEED001-DXF.md, SEED002-URAL1.md and SEED003-CNC-LINK.md
+    quote, and README's split | punch5121 pipeline's ten frames."""
     dxf = " ".join((ROOT / "docs" / "SEED001-DXF.md").read_text().split())
     (tmp_path / "board.dxf").symlink_to(ROOT / "examples" / "dxf" / "board.dxf")
     got = subprocess.run([sys.executable, "-m", "seeds", "dxf2deck", "board.dxf", "-o", "b.crd"],
@@ -136,6 +136,14 @@ def test_quoted_messages_are_the_tools(tmp_path) -> None:
                          timeout=120).stderr.splitlines()[-1]
     pattern = re.escape(quoted).replace("N", r"\d+").replace("M", r"\d+")
     assert re.fullmatch("cnclink: " + pattern, got), (quoted, got)
+
+    ural = " ".join((ROOT / "docs" / "SEED002-URAL1.md").read_text().split())
+    quoted = re.search(r"`(package NOTCH: [^`]*)`", ural)[1]
+    from seeds.tests.test_seed002 import NOTCH     # its card 7 the slot's floor, 1 mm
+    (tmp_path / "notch.crd").write_text(NOTCH)
+    got = subprocess.run([sys.executable, "-m", "seeds", "equidistant", "notch.crd", "--cutter",
+                          "4"], cwd=tmp_path, capture_output=True, text=True, timeout=120).stderr
+    assert got == f"equidistant: notch.crd: {quoted}\n", (quoted, got)
 
     readme = " ".join((ROOT / "README.md").read_text().split())
     assert "split --max 9999 98132 87647 | python -m seeds punch5121 - -o move.ptp` splits " \
