@@ -48,10 +48,9 @@ from shapely.geometry.base import BaseGeometry
 from harness import cards
 from harness.files import write_whole
 
+from .contour import FIELD_MM
 from .options import Parser, mm_list
 
-#: the coordinatograph's field, mm
-FIELD_MM = 1200.0
 #: where the start point goes on the field by default (mm)
 START_MM = (10.0, 10.0)
 #: how far an arc's chords may stray from it (mm)
