@@ -50,6 +50,9 @@ SERVICE: dict[int, str] = {MINUS: "minus", X: "X", Y: "Y", DX: "DX", DY: "DY",
 COMMANDS: tuple[int, ...] = (10, 20, 11, 13)
 #: Largest arc radius, 10 m in 0.01 mm units (report: "радиус дуги <= 10 м").
 MAX_RADIUS = 1_000_000
+#: The most digits a number on a tape has (docs/TAPE.md): 999 999 999 units,
+#: 10 km; a tenth digit is an error at its row.
+MAX_DIGITS = 9
 #: An arc's end point may be off the start circle by at most this much.
 ARC_TOLERANCE = 1
 #: Codes accepted by :func:`decode` and :func:`encode`.
@@ -140,6 +143,12 @@ def frame_problems(frame: Frame) -> list[tuple[str, str]]:
         if not isinstance(value, int) or isinstance(value, bool):
             out.append((name.upper(), f"{name.upper()} must be an int, "
                                       f"not {type(value).__name__}"))
+    if out:
+        return out
+    for name in ("x", "y", "dx", "dy", "cyc"):
+        if abs(getattr(f, name)) >= 10 ** MAX_DIGITS:
+            out.append((name.upper(), f"{name.upper()} has more than {MAX_DIGITS} digits "
+                                      f"(the largest number is {10 ** MAX_DIGITS - 1})"))
     if out:
         return out
     circular = f.k in (11, 13)
@@ -304,8 +313,8 @@ class _Reader:
         n, value = self.i + 1, self.data[self.i]
         self.i += 1
         if value > 0o37:
-            raise TapeError(n, f"byte 0x{value:02X} has bits above the low 5 "
-                               "set (not a 5-track row)")
+            raise TapeError(n, f"byte {value:03o} (octal) has bits above the low 5 "
+                               "set (not a 5-track row: a row is 00 to 37)")
         return n, value
 
     def classify(self, n: int, value: int) -> _Row:
@@ -363,10 +372,15 @@ def _read_number(rd: _Reader, name: str, signed: bool) -> tuple[int, _Row]:
     if row.digit == 0:
         nxt = rd.data[rd.i] if rd.i < len(rd.data) else None
         if nxt is not None and nxt in rd.digit_of:
-            raise TapeError(row.n, f"leading zero in {name}")
+            raise TapeError(row.n, f"leading zero in {name} (a number is punched from its "
+                                   "first digit that is not 0)")
         raise TapeError(row.n, f"{name} is 0: a zero value is never punched")
-    value = 0
+    value = digits = 0
     while row is not None and row.kind == "digit":
+        digits += 1
+        if digits > MAX_DIGITS:
+            raise TapeError(row.n, f"{name} has more than {MAX_DIGITS} digits (the largest "
+                                   f"number is {10 ** MAX_DIGITS - 1})")
         value = value * 10 + row.digit
         row = rd.next()
     if row is None:
@@ -411,7 +425,8 @@ def _read_frame(rd: _Reader, first: _Row) -> tuple[Frame, dict[str, int]]:
                                         "(the tape ends inside a frame)")
         if nxt.kind != "digit" or len(digits) == 2:
             if nxt.kind == "digit" or len(digits) < 2:
-                raise TapeError(nxt.n, "K must be followed by exactly two digits")
+                raise TapeError(nxt.n, "K must be followed by exactly two digits, found "
+                                       f"{_found(nxt)}")
             break
         digits.append(nxt.digit)
         if len(digits) == 2:
@@ -443,9 +458,11 @@ for _code, _digits in (("8", DIGITS_8), ("K", DIGITS_K)):
         _table[_v] = ord(_c)
     _CHARS[_code] = bytes(_table)
 #: One well-formed frame in those characters: the fields in their order,
-#: no zero value, no leading zero, no minus on CYC, K and two digits, KK.
-_FRAME = re.compile(rb"(?:X(-?[1-9][0-9]*))?(?:Y(-?[1-9][0-9]*))?(?:D(-?[1-9][0-9]*))?"
-                    rb"(?:E(-?[1-9][0-9]*))?(?:C([1-9][0-9]*))?K([0-9][0-9]);")
+#: no zero value, no leading zero, no minus on CYC, at most MAX_DIGITS
+#: digits, K and two digits, KK.
+_NUMBER = rb"[1-9][0-9]{0,%d}" % (MAX_DIGITS - 1)
+_FRAME = re.compile(rb"(?:X(-?%s))?(?:Y(-?%s))?(?:D(-?%s))?(?:E(-?%s))?(?:C(%s))?K([0-9][0-9]);"
+                    % ((_NUMBER,) * 5))
 
 
 def _decode_whole(data: bytes, code: str) -> Tape | None:
@@ -548,7 +565,7 @@ def decode(data: bytes, code: str = "auto") -> Tape:
             opener = (len(frames), rows["CYC"])
         frames.append(frame)
     if opener is not None:
-        raise TapeError(opener[1], "CYC needs a following frame")
+        raise TapeError(opener[1], "CYC needs a following frame (CYC on the last frame)")
 
     # Trailer: blank rows only.
     while True:
@@ -631,6 +648,9 @@ def _parse_tokens(line: str, names: dict[str, str], lineno: int) -> Frame:
             raise fail(f"bad number in {token!r}")
         if digits[0] == "0":
             raise fail(f"leading zero or zero value in {token!r}")
+        if len(digits) > MAX_DIGITS:
+            raise fail(f"{names[field]} has more than {MAX_DIGITS} digits ({len(digits)}; "
+                       f"the largest number is {10 ** MAX_DIGITS - 1})")
         value = int(number)
         if field == "CYC" and value < 2:
             raise fail(f"CYC {value}: a cycle runs its pair at least 2 times")

@@ -94,6 +94,7 @@ module em703_codec
     type, public :: decoder_t
         character(len=1) :: code = '8'
         logical :: told = .false.
+        integer :: evidence = 0          !< the row whose digit told the variant (auto), or 0
         logical :: opened = .false.
         integer :: nrows = 0
         integer :: nframes = 0
@@ -347,16 +348,18 @@ contains
         n = rd%i
         value = iachar(data(n:n))
         if (value > 31 .or. value < 0) then
-            call new_error(err, 'byte 0x' // hex2(value) // &
-                ' has bits above the low 5 set (not a 5-track row)', AT_ROW, n)
+            call new_error(err, 'byte ' // octal3(value) // &
+                ' (octal) has bits above the low 5 set (not a 5-track row: a row is 00 to 37)', &
+                AT_ROW, n)
         end if
     end subroutine raw
 
-    function hex2(v) result(s)
+    !> A byte in three octal digits, as the tape's own codes are named.
+    function octal3(v) result(s)
         integer, intent(in) :: v
-        character(len=2) :: s
-        write(s, '(z2.2)') iand(v, 255)
-    end function hex2
+        character(len=3) :: s
+        write(s, '(o3.3)') iand(v, 255)
+    end function octal3
 
     !> Next row classified in the reader's variant; got = .false. at the end.
     subroutine next_row(rd, data, got, row, err)
@@ -448,7 +451,9 @@ contains
             if (rd%i < rd%n) nxt = iachar(data(rd%i + 1:rd%i + 1))
             if (nxt >= 0 .and. nxt <= 31) then
                 if (rd%digit_of(nxt) >= 0) then
-                    call new_error(err, 'leading zero in ' // name, AT_ROW, row%n)
+                    call new_error(err, 'leading zero in ' // name // &
+                                   ' (a number is punched from its first digit that is not 0)', &
+                                   AT_ROW, row%n)
                     return
                 end if
             end if
@@ -532,7 +537,8 @@ contains
             end if
             if (nxt%kind /= KIND_DIGIT .or. ndig == 2) then
                 if (nxt%kind == KIND_DIGIT .or. ndig < 2) then
-                    call new_error(err, 'K must be followed by exactly two digits', AT_ROW, nxt%n)
+                    call new_error(err, 'K must be followed by exactly two digits, found ' // &
+                                   describe_row(nxt%value), AT_ROW, nxt%n)
                     return
                 end if
                 exit
@@ -613,30 +619,35 @@ contains
     !> Start reading a tape image (bytes 0..255, a byte a row) frame by frame;
     !> code is "8", "K" or "auto" (decode_tape). Reads the leader up to the
     !> opening GM; err when there is none.
-    subroutine decoder_start(dec, data, code, err)
+    subroutine decoder_start(dec, data, code, err, evidence)
         type(decoder_t), intent(out) :: dec
         character(len=*), intent(in) :: data
         character(len=*), intent(in) :: code
         type(error_t), allocatable, intent(out) :: err
+        !> a second reading of a tape whose variant "auto" told: the row that
+        !> told it (decoder_t's evidence), so its faults read as the first did
+        integer, intent(in), optional :: evidence
         logical :: got
-        integer :: n, value, evidence
+        integer :: n, value, told_at
         character(len=1) :: c
         dec%nrows = len(data)
         dec%done = .true.
-        evidence = 0
+        told_at = 0
         select case (code)
         case ('8', 'K')
             c = code
             dec%told = .true.
+            if (present(evidence)) told_at = evidence
         case ('auto')
-            call scan_code(data, c, evidence)
-            dec%told = evidence > 0
+            call scan_code(data, c, told_at)
+            dec%told = told_at > 0
         case default
             call new_error(err, 'code must be 8, K or auto, not "' // code // '"')
             return
         end select
         dec%code = c
-        call reader_init(dec%rd, len(data), c, evidence)
+        dec%evidence = told_at
+        call reader_init(dec%rd, len(data), c, told_at)
 
         ! Leader: blank rows up to the opening GM.
         do

@@ -93,7 +93,7 @@ contains
             ',' // fixed(run%ymin, 2) // ',' // fixed(run%ymax, 2) // '],' // achar(10) // '"f":[')
         prev = gm1
         first = .true.
-        call decoder_start(dec, run%bytes, run%code, err)
+        call decoder_start(dec, run%bytes, run%code, err, run%evidence)
         do while (.not. allocated(err))
             call next_frame(dec, run%bytes, f, got, err)
             if (.not. got) exit

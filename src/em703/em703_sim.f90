@@ -64,6 +64,7 @@ module em703_sim
         character(len=:), allocatable :: bytes
         character(len=1) :: code = '8'
         logical :: told = .false.
+        integer :: evidence = 0          !< decoder_t's: the row that told the variant
         type(frame_t), allocatable :: frames(:)
         integer :: nrows = 0
         integer :: nframes = 0
@@ -195,6 +196,7 @@ contains
         call decoder_start(dec, run%bytes, code, err)
         run%code = dec%code
         run%told = dec%told
+        run%evidence = dec%evidence
         if (allocated(err)) return
         call run_stats(run, err)
     end subroutine simulate_image
@@ -281,7 +283,8 @@ contains
         w%px = run%ox
         w%py = run%oy
         w%started = .true.
-        if (allocated(run%bytes)) call decoder_start(w%dec, run%bytes, run%code, err)
+        if (allocated(run%bytes)) call decoder_start(w%dec, run%bytes, run%code, err, &
+                                                     run%evidence)
     end subroutine walk_start
 
     !> The run's next frame; got = .false. at its end.

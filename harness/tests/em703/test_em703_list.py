@@ -140,3 +140,29 @@ def test_each_error_names_its_row(em703_exe, tmp_path, rows, code, row, words) -
     with pytest.raises(TapeError) as exc:
         decode(bytes(rows), code)
     assert exc.value.row == row
+
+
+@pytest.mark.parametrize("command", ["list", "sim", "gcode"])
+def test_each_reader_says_what_the_decoder_says(em703_exe, tmp_path, command) -> None:
+    """Every broken tape of the oracle's own table (harness/tests/oracle/
+    test_tape.py: each fault, the mixed code, a tenth digit) is refused by
+    `em703 list`, `sim` and `gcode` with the decoder's row and message, word
+    for word: sim reads the tape again for each walk, and must not forget
+    which row told the variant.  gcode has no --code: it reads as "auto"."""
+    from harness.tests.oracle.test_tape import DECODE_ERRORS
+    path = tmp_path / "bad.ptp"
+    wrong = []
+    for name, data, code, row, message in DECODE_ERRORS:
+        path.write_bytes(data)
+        if command == "gcode":
+            try:
+                decode(data, "auto")
+                continue                    # a fault of code 8 or K alone
+            except TapeError as exc:
+                row, message = exc.row, exc.message
+            proc = run(em703_exe, command, path, "-o", tmp_path / "bad.nc", check=1)
+        else:
+            proc = run(em703_exe, command, path, "--code", code, check=1)
+        if proc.stderr.decode() != f"{path}: row {row}: {message}\n":
+            wrong.append((name, proc.stderr.decode()))
+    assert wrong == [] and len(DECODE_ERRORS) >= 45

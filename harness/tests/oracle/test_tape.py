@@ -299,11 +299,11 @@ DECODE_ERRORS: list[tuple[str, bytes, str, int, str]] = [
      "8", 4, "expected X, Y, DX, DY, CYC, K or GM at the start of a frame, "
              "found digit 1 (01)"),
     ("K one digit", with_gm(0o16, 0o01, 0o17),
-     "8", 6, "K must be followed by exactly two digits"),
+     "8", 6, "K must be followed by exactly two digits, found KK (17)"),
     ("K three digits", with_gm(0o16, 0o01, 0o00, 0o00, 0o17),
-     "8", 7, "K must be followed by exactly two digits"),
+     "8", 7, "K must be followed by exactly two digits, found digit 0 (00)"),
     ("K no digit", with_gm(0o16, 0o17),
-     "8", 5, "K must be followed by exactly two digits"),
+     "8", 5, "K must be followed by exactly two digits, found KK (17)"),
     ("K not a command", with_gm(0o20, 0o03, 0o16, 0o01, 0o05, 0o17),
      "8", 6, "K 15 is not a command (10, 20, 11, 13)"),
     ("K 00", with_gm(0o16, 0o00, 0o00, 0o17),
@@ -311,9 +311,9 @@ DECODE_ERRORS: list[tuple[str, bytes, str, int, str]] = [
     ("K then not KK", with_gm(0o20, 0o03, 0o16, 0o01, 0o00, 0o12),
      "8", 9, "expected KK after K10, found X (12)"),
     ("leading zero", with_gm(0o20, 0o00, 0o03, 0o16, 0o01, 0o00, 0o17),
-     "8", 5, "leading zero in DX"),
+     "8", 5, "leading zero in DX (a number is punched from its first digit that is not 0)"),
     ("leading zero after minus", with_gm(0o21, 0o14, 0o00, 0o03, 0o16, 0o01, 0o00, 0o17),
-     "8", 6, "leading zero in DY"),
+     "8", 6, "leading zero in DY (a number is punched from its first digit that is not 0)"),
     ("zero value", with_gm(0o20, 0o00, 0o16, 0o01, 0o00, 0o17),
      "8", 5, "DX is 0: a zero value is never punched"),
     ("minus without digits", with_gm(0o20, 0o14, 0o16, 0o01, 0o00, 0o17),
@@ -325,7 +325,7 @@ DECODE_ERRORS: list[tuple[str, bytes, str, int, str]] = [
     ("CYC 1", with_gm(0o20, 0o03, 0o30, 0o01, 0o16, 0o01, 0o00, 0o17, *DX3_K10),
      "8", 6, "CYC 1: a cycle runs its pair at least 2 times"),
     ("leading zero in CYC", with_gm(0o30, 0o00, 0o02, 0o16, 0o01, 0o00, 0o17, *DX3_K10),
-     "8", 5, "leading zero in CYC"),
+     "8", 5, "leading zero in CYC (a number is punched from its first digit that is not 0)"),
     ("missing closing GM", bytes([0o37, *DX3_K10]),
      "8", 8, "missing GM at the end of the tape"),
     ("tape ends inside a frame", bytes([0o37, 0o20, 0o03]),
@@ -341,9 +341,11 @@ DECODE_ERRORS: list[tuple[str, bytes, str, int, str]] = [
     ("GM after GM pair", bytes([0o37, 0o37, 0o37]),
      "8", 3, "data after the closing GM: found GM (37)"),
     ("high bits", bytes([0, 0o37, 0x43, 0o37]),
-     "8", 3, "byte 0x43 has bits above the low 5 set (not a 5-track row)"),
+     "8", 3, "byte 103 (octal) has bits above the low 5 set (not a 5-track row: a row "
+            "is 00 to 37)"),
     ("high bits in leader", bytes([0x20, 0o37, 0o37]),
-     "auto", 1, "byte 0x20 has bits above the low 5 set (not a 5-track row)"),
+     "auto", 1, "byte 040 (octal) has bits above the low 5 set (not a 5-track row: a "
+               "row is 00 to 37)"),
     ("not a code", with_gm(0o20, 0o03, 0o15),
      "8", 6, "code 15 (octal) is not an EM-703 code"),
     ("controlled digit in code 8", with_gm(0o20, 0o23, 0o16, 0o01, 0o00, 0o17),
@@ -368,8 +370,19 @@ DECODE_ERRORS: list[tuple[str, bytes, str, int, str]] = [
     ("radius over 10 m", with_gm(0o12, 0o01, 0o00, 0o00, 0o00, 0o00, 0o00, 0o01,
                                  0o16, 0o01, 0o01, 0o17),
      "8", 4, "radius 1000001.0 exceeds 1000000 units (10 m)"),
+    ("ten digits", with_gm(0o20, 0o01, *[0] * 9, 0o16, 0o02, 0o00, 0o17),
+     "8", 14, "DX has more than 9 digits (the largest number is 999999999)"),
+    ("ten digits after a minus", with_gm(0o21, 0o14, *[0o01] * 10, 0o16, 0o02, 0o00, 0o17),
+     "8", 15, "DY has more than 9 digits (the largest number is 999999999)"),
+    ("ten digits of CYC", with_gm(0o20, 0o03, 0o30, *[0o07] * 10, 0o16, 0o01, 0o00, 0o17,
+                                  *DX3_K10),
+     "8", 16, "CYC has more than 9 digits (the largest number is 999999999)"),
+    ("a radius of 156 digits", with_gm(0o12, 0o01, *[0] * 155, 0o16, 0o01, 0o01, 0o17),
+     "8", 14, "X has more than 9 digits (the largest number is 999999999)"),
+    ("a number of 4301 digits", with_gm(0o20, *[0o01] * 4301, 0o16, 0o02, 0o00, 0o17),
+     "8", 14, "DX has more than 9 digits (the largest number is 999999999)"),
     ("CYC on the last frame", with_gm(*DX3_K10[:2], 0o30, 0o02, *DX3_K10[2:]),
-     "8", 6, "CYC needs a following frame"),
+     "8", 6, "CYC needs a following frame (CYC on the last frame)"),
     ("CYC on the partner frame",
      with_gm(*DX3_K10[:2], 0o30, 0o02, *DX3_K10[2:],
              *DX3_K10[:2], 0o30, 0o03, *DX3_K10[2:], *DX3_K10),
@@ -385,6 +398,23 @@ def test_decode_error(data: bytes, code: str, row: int, message: str) -> None:
         decode(data, code)
     assert (info.value.row, info.value.message) == (row, message)
     assert str(info.value) == f"row {row}: {message}"
+
+
+def test_nine_digits_is_the_largest_number() -> None:
+    """999 999 999 in every field reads back, by the whole-tape reader and the
+    row reader; a tenth digit is refused by the encoder and the text reader."""
+    frames = [Frame(dx=999_999_999, dy=-999_999_999, cyc=999_999_999), Frame(dx=-1)]
+    data = encode(frames)
+    assert decode(data).frames == frames
+    # a fault in the trailer: the row reader reads every frame, then names it
+    with pytest.raises(TapeError) as info:
+        decode(data[:-20] + b"\x00\x01")
+    assert (info.value.row, info.value.message[:25]) == (len(data) - 18,
+                                                         "data after the closing GM")
+    with pytest.raises(ValueError, match="frame 1: DX has more than 9 digits"):
+        encode([Frame(dx=10 ** 9)])
+    with pytest.raises(ValueError, match=r"line 1: DX has more than 9 digits \(10; the"):
+        parse_frame_text("DX1000000000 K10 KK")
 
 
 def test_arc_tolerance_is_exactly_one_unit() -> None:
