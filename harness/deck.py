@@ -255,20 +255,31 @@ def _need(value: int | None, no: int, what: str) -> int:
 # ---------------------------------------------------------------------------
 # The deck.
 # ---------------------------------------------------------------------------
-_CONTROL = ("NAME", "TIME", "PASS", "TAPE", "PERSO", "MAIN", "NO LOAD LIST",
-            "CALL FICMEMORY", "EXECUTE", "END FILE")
+#: The monitor's control cards: keyword (blanks and ``_`` not counted) -> name,
+#: and whether an argument may follow it (``*TIME:00.05``): ``*NO LOAD LIST``,
+#: ``*EXECUTE`` and ``*END FILE`` take none, so ``*EXECUTEX`` is no card.
+_CONTROL = {"NAME": ("NAME", True), "TIME": ("TIME", True), "PASS": ("PASS", True),
+            "TAPE": ("TAPE", True), "PERSO": ("PERSO", True), "MAIN": ("MAIN", True),
+            "NOLOADLIST": ("NO LOAD LIST", False), "CALL": ("CALL", True),
+            "EXECUTE": ("EXECUTE", False), "ENDFILE": ("END FILE", False)}
 
 
 def _control(card: str, no: int) -> str:
-    """The keyword of a job control card (``*`` or ``#``, ``_`` = blank);
-    the keyword ends at any character other than a letter or digit
-    (``*TIME:00.05``)."""
-    text = card[1:].replace("_", " ").upper().strip()
-    for key in _CONTROL:
-        if text == key or (text.startswith(key) and not text[len(key)].isalnum()):
-            if key == "MAIN" and text.split()[1:2] != ["TENZOR"]:
-                raise CardError(no, f"*MAIN names another program: {card!r}")
-            return key
+    """The keyword of a job control card (``*`` or ``#`` in column 1), read
+    as the monitor read it (docs/CARDS.md): columns 2-72 in either case,
+    blanks and ``_`` not counted, so ``#no _load _list`` is ``*NO LOAD
+    LIST``; the first keyword the letters begin with.  ``*MAIN``'s argument
+    (after blanks and colons) must be TENZOR."""
+    text = card[1:72].replace("_", " ").upper()
+    letters = text.replace(" ", "")
+    for key, (name, argument) in _CONTROL.items():
+        if letters == key or (argument and letters.startswith(key)):
+            if name == "MAIN":
+                # TENZOR's reading: after the first MAIN (else column 5 on)
+                program = text[text.find("MAIN") + 4:].lstrip(" :").rstrip()
+                if program != "TENZOR":
+                    raise CardError(no, f"*MAIN names another program: {card!r}")
+            return name
     raise CardError(no, f"unknown control card {card!r}")
 
 
@@ -385,12 +396,14 @@ class _Builder:
     def d_card(self, no: int, c: str) -> None:
         _blank(c, [(2, 10), (71, 72)], no)
         w = _need(real(c, 31, 38, no, None), no, "pad W")
-        h = real(c, 39, 46, no, None)
+        h = real(c, 39, 46, no, None) or None          # blank or 0: a round pad
         n = integer(c, 47, 50, no, 1)
-        if w <= 0 or (h is not None and h <= 0) or n < 1:
+        if w <= 0 or (h is not None and h < 0) or n < 1:
             raise CardError(no, "pad W, H and N must be positive")
-        self.pads.append(Pad(no, real(c, 11, 20, no), real(c, 21, 30, no), w, h, n,
-                             real(c, 51, 60, no), real(c, 61, 70, no)))
+        sx, sy = real(c, 51, 60, no), real(c, 61, 70, no)
+        if n > 1 and sx == sy == 0:
+            raise CardError(no, f"a row of {n} pads needs a step (SX or SY)")
+        self.pads.append(Pad(no, real(c, 11, 20, no), real(c, 21, 30, no), w, h, n, sx, sy))
 
     def l_card(self, no: int, c: str) -> None:
         _blank(c, [(2, 10), (39, 72)], no)

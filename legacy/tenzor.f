@@ -92,6 +92,8 @@ C     ADDRESSES PROVE THE TABLE IS THERE
       ISTATE = 1
       LAFTC = 0
 C     ---- NEXT CARD ---------------------------------------------------
+C     A CARD BLANK IN COLS 1-72 IS SKIPPED WHEREVER IT IS: COLS 73-80,
+C     THE SEQUENCE FIELD, ARE NEVER READ (TZDATA SKIPS IT IN A PACKAGE)
    10 CONTINUE
       CALL TZCARD(CARD, IEND, IBAD, IBCOL, MSG)
       IF (IEND .NE. 0) GOTO 80
@@ -105,7 +107,7 @@ C     ---- STATE 1: BEFORE THE DATA ------------------------------------
          CALL CMERR('TENZOR', NCARD, IBCOL, MSG)
          GOTO 10
       END IF
-      IF (CARD .EQ. ' ') GOTO 10
+      IF (CARD(1:72) .EQ. ' ') GOTO 10
       IF (CH .EQ. '*' .OR. CH .EQ. '#') THEN
          CALL TZCTRL(CARD, IKEY)
          IF (IKEY .EQ. 9) ISTATE = 2
@@ -129,11 +131,15 @@ C     ---- STATE 2: A NAME CARD IS DUE ---------------------------------
          CALL CMERR('TENZOR', NCARD, IBCOL, MSG)
          GOTO 10
       END IF
-      IF (CARD .EQ. ' ') GOTO 10
+      IF (CARD(1:72) .EQ. ' ') GOTO 10
       IF (IKEY .EQ. 10) THEN
-         IF (LAFTC .EQ. 1) CALL CMERR('TENZOR', NCARD, 1, 'THE LAST '
-     1      // 'PACKAGE ENDED WITH C BUT NO PACKAGE FOLLOWS; END IT '
-     2      // 'WITH E')
+         IF (LAFTC .EQ. 1) THEN
+            CALL CMERR('TENZOR', NCARD, 1, 'THE LAST PACKAGE ENDED WITH'
+     1         // ' C BUT NO PACKAGE FOLLOWS; END IT WITH E')
+         ELSE
+            CALL CMERR('TENZOR', NCARD, 1, 'NO PACKAGE AFTER *EXECUTE;'
+     1         // ' EXPECTED A NAME CARD, DATA CARDS AND AN E CARD')
+         END IF
          ISTATE = 5
          GOTO 10
       END IF
@@ -175,7 +181,7 @@ C     ---- STATE 4: AFTER THE E CARD -----------------------------------
          CALL CMERR('TENZOR', NCARD, IBCOL, MSG)
          GOTO 10
       END IF
-      IF (CARD .EQ. ' ') GOTO 10
+      IF (CARD(1:72) .EQ. ' ') GOTO 10
       IF (IKEY .EQ. 10) THEN
          ISTATE = 5
          GOTO 10

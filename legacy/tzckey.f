@@ -20,6 +20,7 @@ C     ---- LOCAL -------------------------------------------------------
       PARAMETER (NKEY = 10)
       CHARACTER*10 KEYS(NKEY)
       INTEGER LKEY(NKEY), I, K, L
+      LOGICAL LARG(NKEY)
       CHARACTER*80 WORK
       CHARACTER*1 CH
       CHARACTER*26 UPPER, LOWER
@@ -28,6 +29,10 @@ C     ---- LOCAL -------------------------------------------------------
       DATA KEYS / 'NAME', 'TIME', 'PASS', 'TAPE', 'PERSO', 'MAIN',
      1            'NOLOADLIST', 'CALL', 'EXECUTE', 'ENDFILE' /
       DATA LKEY / 4, 4, 4, 4, 5, 4, 10, 4, 7, 7 /
+C     WHICH KEYWORDS TAKE AN ARGUMENT AFTER THEM (*TIME:00.05): NO LOAD
+C     LIST, EXECUTE AND END FILE TAKE NOTHING, SO *EXECUTEX IS UNKNOWN
+      DATA LARG / .TRUE., .TRUE., .TRUE., .TRUE., .TRUE., .TRUE.,
+     1            .FALSE., .TRUE., .FALSE., .FALSE. /
 C
 C     COLUMNS 2-72 (73-80 ARE THE SEQUENCE FIELD), IN UPPER CASE,
 C     WITHOUT BLANKS AND _
@@ -45,7 +50,7 @@ C     WITHOUT BLANKS AND _
       IKEY = 0
       DO 20 I = 1, NKEY
          IF (WORK(1:LKEY(I)) .EQ. KEYS(I)(1:LKEY(I))) THEN
-            IKEY = I
+            IF (LARG(I) .OR. L .EQ. LKEY(I)) IKEY = I
             RETURN
          END IF
    20 CONTINUE

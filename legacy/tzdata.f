@@ -27,7 +27,8 @@ C     ---- LOCAL -------------------------------------------------------
       DATA UPPER / 'ABCDEFGHIJKLMNOPQRSTUVWXYZ' /
       DATA LOWER / 'abcdefghijklmnopqrstuvwxyz' /
 C
-      IF (CARD .EQ. ' ') RETURN
+C     A CARD BLANK IN COLS 1-72 IS NO CARD: COLS 73-80 ARE NEVER READ
+      IF (CARD(1:72) .EQ. ' ') RETURN
       CH = CARD(1:1)
 C     ANY CARD BUT + ENDS THE CONDUCTOR BEING READ
       IF (CH .NE. '+') CALL TZLCLS

@@ -10,6 +10,7 @@ import subprocess
 import pytest
 
 from harness import tape
+from harness.deck import CardError, parse_deck
 
 
 def card(**cols: str) -> str:
@@ -118,6 +119,28 @@ def test_bad_card_is_reported_and_stops_only_its_package(run_tenzor, cards, card
     assert lines[at - 1].rstrip().endswith("^") and len(lines[at - 1].rstrip()) == 9 + col
 
 
+#: The faults the oracle's reader leaves to the tapes: where the drawing
+#: stands on the machine (its scale, its field, its largest radius), which
+#: verify checks on the tapes TENZOR punches, not on the cards.
+THE_MACHINES = {"scale-off-list", "start-off-field", "leaves-field", "leaves-field-at-scale",
+                "circle-too-big", "coordinate-beyond-any-field"}
+
+
+def test_the_oracle_refuses_each_bad_card_at_the_same_card():
+    """harness/deck.py, an independent reader, refuses every card TENZOR
+    refuses above, naming the same card: but the machine's own limits."""
+    wrong = []
+    for name, cards, cardno, _, _ in CASES:
+        try:
+            parse_deck(_deck(cards))
+            if name not in THE_MACHINES:
+                wrong.append((name, "taken"))
+        except CardError as exc:
+            if name in THE_MACHINES or exc.card != cardno:
+                wrong.append((name, str(exc)))
+    assert wrong == []
+
+
 def test_missing_e_card(run_tenzor):
     proc, out = run_tenzor(GOOD + NAME + P + "\n")
     err = proc.stderr.decode()
@@ -141,6 +164,7 @@ def test_main_naming_another_program_refuses_the_job(run_tenzor):
     ("", "THE DECK HOLDS NO PACKAGE"),
     ("\n\n   \n", "THE DECK HOLDS NO PACKAGE"),
     ("*NAME X\n*EXECUTE\n", "NO PACKAGE AFTER *EXECUTE"),
+    ("*NAME X\n*EXECUTE\n*END FILE\n", "CARD 3 COL 1: NO PACKAGE AFTER *EXECUTE"),
     (GOOD, "ENDED WITH C BUT NO PACKAGE FOLLOWS"),
     (GOOD.replace("C\n", "E\n") + "MORE\n", "CARD AFTER THE FINAL E CARD"),
     ("*NAME X\nGOOD\nE\n", "DATA BEFORE *EXECUTE"),
@@ -150,6 +174,26 @@ def test_deck_level_faults(run_tenzor, deck, fragment):
     proc, _ = run_tenzor(deck)
     assert proc.returncode == 1
     assert fragment in proc.stderr.decode()
+
+
+def test_a_card_with_only_a_sequence_number_is_a_blank_card(run_tenzor):
+    """Columns 73-80 are never read: a card holding only its sequence number
+    is skipped wherever it stands (before *EXECUTE, where a name card is
+    due, inside a conductor, after E), and the tapes are those of the deck
+    without it."""
+    seq = " " * 72 + "SEQ00030"
+    conductor = [card(c1="L", c11=f10("5.00"), c21=f10("5.00")), seq,
+                 card(c1="+", c11=f10("25.00"), c21=f10("5.00"))]
+    plain = "\n".join(["*NAME X", "*EXECUTE", "T", P, *conductor, "E"]) + "\n"
+    plain = plain.replace(seq + "\n", "")
+    holed = "\n".join([seq, "*NAME X", "*EXECUTE", seq, "T", P, *conductor, "E", seq]) + "\n"
+    want, want_out = run_tenzor(plain)
+    assert want.returncode == 0, want.stderr.decode()
+    got, got_out = run_tenzor(holed)
+    assert (got.returncode, got.stderr) == (0, b"")
+    for name in ("T-small.ptp", "T-large.ptp", "T-cond.ptp"):
+        assert (got_out / name).read_bytes() == (want_out / name).read_bytes()
+    assert b"DX2000 K10" in (got_out / "T-cond.txt").read_bytes()   # one line, 20 mm
 
 
 def test_duplicate_package_names_keep_both_listings(run_tenzor):
