@@ -41,17 +41,38 @@ C     ---- LOCAL -------------------------------------------------------
       INTEGER LN
       INTEGER I, J, N, NTOP, JTOP, IREP, NREP, NF, L
       LOGICAL LLONG
+C     THE ARCS OVER THE LIMIT OF ONE CARD ARE ONE ERROR: ITS CARD, AND
+C     THE LONGEST NUMBER OF ITS RUN OF FRAMES (IAMAX)
+      INTEGER IACRD, IAMAX
+      CHARACTER*12 S1, S2
+      INTEGER L1, L2
 C
       IF (IFMAX .LE. 0 .OR. NFR .LT. I1) RETURN
 C     ---- ANYTHING TO DO? ARCS BEYOND THE LIMIT ARE ERRORS ------------
       LLONG = .FALSE.
+      IACRD = 0
       DO 10 I = I1, NFR
          IF (JFK(I) .EQ. 11 .OR. JFK(I) .EQ. 13) THEN
             IF (MAX(ABS(JFX(I)), ABS(JFY(I)), ABS(JFDX(I)),
-     1              ABS(JFDY(I))) .GT. IFMAX) CALL CMERR('TENZOR',
-     2         JFCRD(I), JFCOL(I), 'AN ARC OF THIS CARD IS LONGER THAN '
-     3         // 'THE FRAME LIMIT FMAX OF THE P CARD; ARCS ARE NOT '
-     4         // 'SPLIT')
+     1              ABS(JFDY(I))) .GT. IFMAX .AND.
+     2          JFCRD(I) .NE. IACRD) THEN
+               IACRD = JFCRD(I)
+               IAMAX = 0
+               DO 5 J = I, NFR
+                  IF (JFCRD(J) .NE. IACRD) GOTO 6
+                  IF (JFK(J) .EQ. 11 .OR. JFK(J) .EQ. 13)
+     1               IAMAX = MAX(IAMAX, ABS(JFX(J)), ABS(JFY(J)),
+     2                           ABS(JFDX(J)), ABS(JFDY(J)))
+    5          CONTINUE
+    6          CONTINUE
+               CALL CMITOA(IAMAX, S1, L1)
+               CALL CMITOA(IFMAX, S2, L2)
+               CALL CMERR('TENZOR', IACRD, JFCOL(I), 'AN ARC OF THIS '
+     1            // 'CARD MOVES ' // S1(1:L1) // ' PULSES, MORE THAN '
+     2            // 'THE FRAME LIMIT FMAX OF THE P CARD (' // S2(1:L2)
+     3            // '); ARCS ARE NOT SPLIT: FMAX MUST BE ' // S1(1:L1)
+     4            // ' OR MORE')
+            END IF
          ELSE IF (MAX(ABS(JFDX(I)), ABS(JFDY(I))) .GT. IFMAX) THEN
             LLONG = .TRUE.
          END IF

@@ -58,3 +58,31 @@ def test_an_m_frame_beyond_the_limit_is_an_error(run_tenzor):
     proc, out = run_tenzor(deck)
     assert proc.returncode == 1
     assert "LONGER THAN THE FRAME LIMIT FMAX" in proc.stderr.decode()
+
+
+@pytest.mark.parametrize("fmax, m, column", [
+    (1000, "M" + " " * 29 + "     20.00" + " " * 15 + "   10", 31),     # DX 20 mm
+    (1000, "M" + " " * 39 + "     20.00" + " " * 5 + "   10", 41),      # DY 20 mm
+    (100, "M" + " " * 9 + "     20.00" + " " * 35 + "   13", 11),      # a circle, X 20 mm
+])
+def test_an_m_frame_beyond_the_limit_names_its_field(run_tenzor, fmax, m, column):
+    """The column of the first of X, Y, DX, DY beyond FMAX, and the limit."""
+    proc, _ = run_tenzor(f"LIMIT\nP{fmax:>9}     10.00     10.00\n{m}\nE\n")
+    assert proc.returncode == 1
+    assert (f"CARD 3 COL {column}: THE FRAME IS LONGER THAN THE FRAME LIMIT FMAX OF THE P "
+            f"CARD ({fmax} PULSES); SPLIT IT INTO M CARDS OF AT MOST {fmax} PULSES"
+            in proc.stderr.decode()), proc.stderr.decode()
+
+
+def test_the_arcs_of_a_pad_beyond_the_limit_are_one_error_that_gives_the_limit(run_tenzor):
+    """A 1.6 mm pad drawn with a 0.5 mm tool moves 55 pulses on its arcs:
+    one error for its card (not one an arc), giving the FMAX that would do;
+    with that FMAX the tapes are punched."""
+    pad = "D               5.00      5.00    1.60"
+    proc, _ = run_tenzor(f"T\nP       54\n{pad}\nE\n")
+    err = proc.stderr.decode()
+    assert proc.returncode == 1 and err.count("TENZOR ERROR") == 1, err
+    assert ("CARD 3 COL 11: AN ARC OF THIS CARD MOVES 55 PULSES, MORE THAN THE FRAME LIMIT "
+            "FMAX OF THE P CARD (54); ARCS ARE NOT SPLIT: FMAX MUST BE 55 OR MORE") in err
+    proc, out = run_tenzor(f"T\nP       55\n{pad}\nE\n")
+    assert proc.returncode == 0, proc.stderr.decode()
