@@ -129,7 +129,9 @@ C     ---- THE FIELD: 0 .. 1200 MM ON THE MACHINE, IN BOTH AXES --------
      1         TNAME(IU) // ' LEAVES THE ' // S5(1:L5) // ' X ' //
      2         S5(1:L5) // ' MM FIELD HERE '
      3         // '(START ' // S1(1:L1) // ', ' // S2(1:L2) //
-     4         ' MM, SCALE ' // S3(1:L3) // ':' // S4(1:L4) // ')')
+     4         ' MM, SCALE ' // S3(1:L3) // ':' // S4(1:L4) //
+     5         '); MOVE THE START POINT (X0, Y0 OF THE P CARD) OR TAKE'
+     6         // ' A SMALLER SCALE')
          END IF
       END IF
       I = I + NF

@@ -140,7 +140,8 @@ C
       END IF
       IF (RS .GT. MXRAD) THEN
          CALL CMERR('TENZOR', NCARD, 31, 'RADIUS OVER 10 M, THE '
-     1      // 'LARGEST ARC OF THE MACHINE')
+     1      // 'LARGEST ARC OF THE MACHINE; DRAW IT AS CONDUCTORS '
+     2      // '(L, +)')
          RETURN
       END IF
 C     ---- KEEP IT AS ITS FRAME: X, Y FROM THE CENTRE, DX, DY ----------

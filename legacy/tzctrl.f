@@ -34,10 +34,14 @@ C     ---- LOCAL -------------------------------------------------------
       DATA LOWER / 'abcdefghijklmnopqrstuvwxyz' /
 C
       LENV = 1
+C     THE ENVELOPE IS KEPT FOR THE LISTINGS; ONE CARD BEYOND ITS TABLE
+C     IS AN ERROR, ONCE (NENV = MXENV + 1 THEN; THE HEADING READS ONLY
+C     THE FIRST MXENV)
       IF (NENV .LT. MXENV) THEN
          NENV = NENV + 1
          ENVC(NENV) = CARD
-      ELSE
+      ELSE IF (NENV .EQ. MXENV) THEN
+         NENV = MXENV + 1
          CALL CMERR('TENZOR', NCARD, 1, 'CAPACITY EXCEEDED: MORE THAN '
      1      // '20 CONTROL CARDS IN THE JOB ENVELOPE (PARAMETER MXENV)')
       END IF

@@ -49,7 +49,7 @@ C
       CALL CMTRIM(PKFILE, L)
       CALL DVPRNT(' PACKAGE  ' // PKNAME // '    FILES ' // PKFILE(1:L)
      1   // '-SMALL, -LARGE, -COND')
-      DO 10 I = 1, NENV
+      DO 10 I = 1, MIN(NENV, MXENV)
          CALL DVPRNT(' ENVELOPE ' // ENVC(I))
    10 CONTINUE
       IF (JOBERR .GT. 0) THEN

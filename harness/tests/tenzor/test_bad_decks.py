@@ -45,7 +45,8 @@ CASES = [
      6, 31, "ARC END IS OFF ITS CIRCLE"),
     ("x-on-a-line", [P, card(c1="M", c11=f10("3.00"), c31=f10("1.00"), c56="   10")], 6, 11, "X IS FOR ARCS"),
     ("arc-without-radius", [P, card(c1="M", c31=f10("1.00"), c56="   11")], 6, 11, "AN ARC NEEDS X OR Y"),
-    ("radius-over-10m", [P, card(c1="M", c11=f10("10000.01"), c56="   13")], 6, 11, "RADIUS OVER 10 M"),
+    ("radius-over-10m", [P, card(c1="M", c11=f10("10000.01"), c56="   13")], 6, 11,
+     "RADIUS OVER 10 M, THE LARGEST ARC OF THE MACHINE"),
     ("bad-tape-letter", [P, card(c1="M", c2="Q", c31=f10("1.00"), c56="   10")], 6, 2, "TAPE 'Q'"),
     ("cyc-on-last-frame", [P, card(c1="M", c31=f10("1.00"), c51="    3", c56="   10")], 6, 51,
      "CYC ON THE LAST M FRAME OF TAPE L"),
@@ -63,7 +64,8 @@ CASES = [
     ("zero-tool", [card(c1="P", c11=f10("10.00"), c21=f10("10.00"), c31="    0.00")], 5, 31, "TOOL W1"),
     ("bad-code-letter", [card(c1="P", c11=f10("10.00"), c21=f10("10.00"), c70="Q")], 5, 70, "TAPE CODE 'Q'"),
     ("bad-order-letter", [card(c1="P", c11=f10("10.00"), c21=f10("10.00"), c71="X")], 5, 71, "ORDER 'X'"),
-    ("leaves-field", [card(c1="M", c31=f10("-1.00"), c56="   10")], 5, 31, "LEAVES THE 1200 X 1200 MM FIELD"),
+    ("leaves-field", [card(c1="M", c31=f10("-1.00"), c56="   10")], 5, 31,
+     "LEAVES THE 1200 X 1200 MM FIELD HERE (START 0.00, 0.00 MM, SCALE 1:1)"),
     ("leaves-field-at-scale", [card(c1="P", c11=f10("600.00"), c21=f10("600.00"), c63="100", c66="  1"),
                                card(c1="M", c31=f10("7.00"), c56="   10")], 6, 31, "SCALE 100:1"),
     ("pad-smaller-than-tool", [P, card(c1="D", c11=f10("1.00"), c21=f10("1.00"), c31="    0.30")], 6, 31,
@@ -79,7 +81,8 @@ CASES = [
      "NARROWER THAN TOOL W3"),
     ("circle-without-direction", [P, card(c1="O", c31=f10("2.00"))], 6, 2, "DIRECTION ' '"),
     ("circle-radius-zero", [P, card(c1="O", c2="+", c31=f10("0.00"))], 6, 31, "RADIUS R IN COLS 31-40"),
-    ("circle-too-big", [P, card(c1="O", c2="+", c31=f10("10000.01"))], 6, 31, "RADIUS OVER 10 M"),
+    ("circle-too-big", [P, card(c1="O", c2="+", c31=f10("10000.01"))], 6, 31,
+     "RADIUS OVER 10 M, THE LARGEST ARC OF THE MACHINE; DRAW IT AS CONDUCTORS (L, +)"),
     ("arc-card-off-circle", [P, card(c1="A", c2="+", c31=f10("5.00"), c51=f10("0.00"), c61=f10("5.02"))],
      6, 51, "ARC END IS OFF ITS CIRCLE"),
     ("arc-start-is-end", [P, card(c1="A", c2="+", c31=f10("5.00"), c51=f10("5.00"))], 6, 51,
@@ -90,6 +93,8 @@ CASES = [
      "THE END OF THE ARC IS ITS CENTRE"),
     ("coordinate-beyond-any-field", [P, card(c1="D", c11=f10("130000.00"), c31="    1.00")], 6, 11,
      "OFF THE FIELD AT EVERY SCALE"),
+    ("pad-beyond-any-field", [P, card(c1="D", c11=f10("10.00"), c31="99999999")], 6, 31,
+     "W IS MORE THAN 120000.00 MM: LARGER THAN THE FIELD AT EVERY SCALE"),
     ("control-card-inside", [P, "*NAME X"], 6, 1, "CONTROL CARD INSIDE A PACKAGE"),
 ]
 
@@ -106,6 +111,9 @@ def test_bad_card_is_reported_and_stops_only_its_package(run_tenzor, cards, card
     assert f"ERROR CARD {cardno} COL {col}: " in err, err
     assert fragment in err, err
     assert "Fortran runtime" not in err and "Backtrace" not in err
+    if "LEAVES THE" in fragment:            # and what would be right
+        assert f"{fragment}; MOVE THE START POINT (X0, Y0 OF THE P CARD) OR TAKE A " \
+               "SMALLER SCALE" in err, err
     # the good package is punched, the bad one has a listing and nothing else
     assert (out / "GOOD-cond.ptp").exists()
     assert sorted(p.name for p in out.glob("BAD*")) == ["BAD.lst"]
@@ -123,7 +131,7 @@ def test_bad_card_is_reported_and_stops_only_its_package(run_tenzor, cards, card
 #: stands on the machine (its scale, its field, its largest radius), which
 #: verify checks on the tapes TENZOR punches, not on the cards.
 THE_MACHINES = {"scale-off-list", "start-off-field", "leaves-field", "leaves-field-at-scale",
-                "circle-too-big", "coordinate-beyond-any-field"}
+                "circle-too-big", "coordinate-beyond-any-field", "pad-beyond-any-field"}
 
 
 def test_the_oracle_refuses_each_bad_card_at_the_same_card():
@@ -194,6 +202,17 @@ def test_a_card_with_only_a_sequence_number_is_a_blank_card(run_tenzor):
     for name in ("T-small.ptp", "T-large.ptp", "T-cond.ptp"):
         assert (got_out / name).read_bytes() == (want_out / name).read_bytes()
     assert b"DX2000 K10" in (got_out / "T-cond.txt").read_bytes()   # one line, 20 mm
+
+
+def test_an_envelope_beyond_its_table_is_one_error(run_tenzor):
+    """The 21st control card is refused (MXENV), once, not again for each
+    card after it; the listing's heading shows the first 20."""
+    deck = "*NAME J\n" + "*TIME 1\n" * 25 + "*EXECUTE\n" + GOOD.replace("C\n", "E\n")
+    proc, out = run_tenzor(deck)
+    err = proc.stderr.decode()
+    assert proc.returncode == 1
+    assert err.count("(PARAMETER MXENV)") == 1 and "ERROR CARD 21 COL 1: CAPACITY" in err, err
+    assert (out / "GOOD.lst").read_text().count(" ENVELOPE *TIME 1") == 19
 
 
 def test_duplicate_package_names_keep_both_listings(run_tenzor):

@@ -246,7 +246,7 @@ FIXED: list[tuple[str, object, int, str | None]] = [
     ("cards-cut-at-40", "\n".join(ln[:40] for ln in DEMO.splitlines()) + "\n", 1, "ERROR CARD"),
     ("thousands-of-packages", many_packages(2000), 0, None),
     ("capacity-packages-MXPKG", many_packages(10001, "Q"), 1, "(PARAMETER MXPKG)"),
-    ("capacity-envelope-MXENV", "*NAME J\n" + "*TIME 1\n" * 20 + "*EXECUTE\n"
+    ("capacity-envelope-MXENV", "*NAME J\n" + "*TIME 1\n" * 25 + "*EXECUTE\n"
      + package("A", [GOOD_M]), 1, "(PARAMETER MXENV)"),
     ("capacity-pads-MXPAD-MXCRD", package("PADS", [P] + [
         "D" + " " * 9 + f10(i % 400 * 0.5) + f10(i // 400 * 0.5) + "    0.50"
