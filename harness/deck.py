@@ -8,6 +8,11 @@ The parser reads VALID decks only, strictly: anything it does not
 understand (a malformed number, a non-blank unused column, a card out of
 place) raises ValueError naming the 1-based card (line) number, so that a
 test can never pass on a misread deck.  Error diagnosis is TENZOR's job.
+It refuses every card fault TENZOR refuses, at the same card, but whether
+the drawing stays on the field (verify checks the tapes against it), FMAX
+(how moves are cut into frames, never what is drawn), TENZOR's capacities
+(MXCRD ...), and names that make the same file (verify refuses a deck with
+two).
 
 The ideal shapes and layers (:class:`~harness.shapes.Disc`,
 :class:`~harness.shapes.RoundRect`, :class:`~harness.shapes.Stroke`,
@@ -26,11 +31,17 @@ from decimal import Decimal
 from . import sim
 from .shapes import (TWO_PI, AnyShape, ArcBand, Disc, Layer, Origin, RoundRect, Stroke,
                      run_shapes)
-from .tape import Frame, sequence_problem
+from .tape import MAX_RADIUS, Frame, sequence_problem
 
 LAYERS: tuple[str, ...] = ("small", "large", "cond")
 #: Tape letter of an M card (column 2) -> layer key.
 M_TAPES: dict[str, str] = {"S": "small", "B": "large", "L": "cond", " ": "cond"}
+#: The P card's ranges (docs/CARDS.md), in units: a tool, the field (X0, Y0,
+#: DMAX), and the machine's nine scales (N, D).
+MAX_TOOL = 2000
+FIELD = 120_000
+SCALES: tuple[tuple[int, int], ...] = ((1, 100), (1, 10), (1, 5), (1, 2), (1, 1), (2, 1),
+                                      (5, 1), (50, 1), (100, 1))
 
 # ---------------------------------------------------------------------------
 # Deck items.
@@ -181,6 +192,9 @@ def real(card: str, a: int, b: int, no: int, default: int | None = 0) -> int | N
         if frac[2:].strip("0"):
             raise CardError(no, f"columns {a}-{b}: more than two decimals: {text!r}")
         value = int(whole or "0") * 100 + int((frac + "00")[:2])
+    if value > 999_999_999:
+        raise CardError(no, f"columns {a}-{b}: more than nine digits (at most "
+                            f"9999999.99 mm): {text!r}")
     return -value if sign == "-" else value
 
 
@@ -392,6 +406,16 @@ class _Builder:
                         (self.scale[1], "scale D")):
             if v <= 0:
                 raise CardError(no, f"{what} must be positive")
+        for v, what in ((self.w1, "w1"), (self.w2, "w2"), (self.w3, "w3")):
+            if v > MAX_TOOL:
+                raise CardError(no, f"{what} {v / 100:.2f} mm: tools are 0.01 to 20.00 mm")
+        if self.dmax > FIELD:
+            raise CardError(no, "Dmax is at most 1200.00 mm")
+        if not (0 <= self.x0 <= FIELD and 0 <= self.y0 <= FIELD):
+            raise CardError(no, "the start point X0, Y0 is off the 1200 x 1200 mm field")
+        if self.scale not in SCALES:
+            raise CardError(no, f"scale {self.scale[0]}:{self.scale[1]} is not one of the "
+                                f"machine's")
 
     def d_card(self, no: int, c: str) -> None:
         _blank(c, [(2, 10), (71, 72)], no)
@@ -432,6 +456,8 @@ class _Builder:
         r = _need(real(c, 31, 40, no, None), no, "radius")
         if r <= 0:
             raise CardError(no, "radius must be positive")
+        if r > MAX_RADIUS:
+            raise CardError(no, "radius over 10 m, the machine's largest arc")
         self.circles.append(Circle(no, cw, real(c, 11, 20, no), real(c, 21, 30, no), r))
 
     def a_card(self, no: int, c: str) -> None:
@@ -450,6 +476,8 @@ class _Builder:
             raise CardError(no, "the arc ends where it starts (a full circle is an O card)")
         if abs(rs - re_) > 1:
             raise CardError(no, f"arc start and end not on one circle ({rs:.2f}, {re_:.2f})")
+        if rs > MAX_RADIUS:
+            raise CardError(no, "radius over 10 m, the machine's largest arc")
         self.arcs.append(arc)
 
     def m_card(self, no: int, c: str) -> None:

@@ -62,7 +62,7 @@ C     ---- LOCAL -------------------------------------------------------
 C     ISTATE  1 = BEFORE THE DATA (THE ENVELOPE), 2 = A NAME CARD IS
 C             DUE (AFTER *EXECUTE OR C), 3 = IN A PACKAGE, 4 = AFTER
 C             THE E CARD, 5 = AFTER *END FILE (NOTHING MORE IS READ)
-      INTEGER ISTATE, IEND, IBAD, IBCOL, IKEY, LAFTC
+      INTEGER ISTATE, IEND, IBAD, IBCOL, IKEY, LAFTC, LTEXT, I
       CHARACTER*80 CARD
       CHARACTER*100 MSG
       CHARACTER*1 CH
@@ -98,11 +98,25 @@ C     THE SEQUENCE FIELD, ARE NEVER READ (TZDATA SKIPS IT IN A PACKAGE)
       CALL TZCARD(CARD, IEND, IBAD, IBCOL, MSG)
       IF (IEND .NE. 0) GOTO 80
       CH = CARD(1:1)
+C     LTEXT = 1: A FAULTY CARD HOLDS MORE THAN ITS BAD CHARACTERS (EACH
+C     SHOWN AS ?) AND BLANKS, SO IT MAY BE A NAME CARD
+      LTEXT = 0
+      IF (IBAD .NE. 0) THEN
+         DO 12 I = 1, 72
+            IF (CARD(I:I) .NE. ' ' .AND. CARD(I:I) .NE. '?') LTEXT = 1
+   12    CONTINUE
+      END IF
       IKEY = 0
       IF (CH .EQ. '*' .OR. CH .EQ. '#') CALL TZCKEY(CARD, IKEY)
       GOTO (100, 200, 300, 400, 90), ISTATE
 C     ---- STATE 1: BEFORE THE DATA ------------------------------------
+C     A FAULTY CARD WITH TEXT WHERE A NAME CARD MAY STAND (NOT A CONTROL
+C     CARD) IS STILL THE NAME CARD: ITS PACKAGE OPENS, WITH THE FAULT AS
+C     ITS FIRST ERROR (SO IT IS NOT PUNCHED), AND THE NEXT CARD IS DATA,
+C     NOT TAKEN FOR A NAME (A BYTE-ORDER MARK BEFORE THE NAME, SAY)
   100 CONTINUE
+      IF (IBAD .NE. 0 .AND. LTEXT .EQ. 1 .AND. LENV .EQ. 0 .AND.
+     1    CH .NE. '*' .AND. CH .NE. '#') GOTO 250
       IF (IBAD .NE. 0) THEN
          CALL CMERR('TENZOR', NCARD, IBCOL, MSG)
          GOTO 10
@@ -127,6 +141,8 @@ C     ---- STATE 1: BEFORE THE DATA ------------------------------------
       GOTO 10
 C     ---- STATE 2: A NAME CARD IS DUE ---------------------------------
   200 CONTINUE
+      IF (IBAD .NE. 0 .AND. LTEXT .EQ. 1 .AND. CH .NE. '*' .AND.
+     1    CH .NE. '#') GOTO 250
       IF (IBAD .NE. 0) THEN
          CALL CMERR('TENZOR', NCARD, IBCOL, MSG)
          GOTO 10
@@ -149,6 +165,12 @@ C     ---- STATE 2: A NAME CARD IS DUE ---------------------------------
          GOTO 10
       END IF
       CALL TZPBEG(CARD)
+      ISTATE = 3
+      GOTO 10
+C     ---- A FAULTY NAME CARD (STATES 1 AND 2) -------------------------
+  250 CONTINUE
+      CALL TZPBEG(CARD)
+      CALL CMERR('TENZOR', NCARD, IBCOL, MSG)
       ISTATE = 3
       GOTO 10
 C     ---- STATE 3: IN A PACKAGE ---------------------------------------

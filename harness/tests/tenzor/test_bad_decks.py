@@ -93,6 +93,8 @@ CASES = [
      "THE END OF THE ARC IS ITS CENTRE"),
     ("coordinate-beyond-any-field", [P, card(c1="D", c11=f10("130000.00"), c31="    1.00")], 6, 11,
      "OFF THE FIELD AT EVERY SCALE"),
+    ("ten-digits", [P, card(c1="D", c11="9999999999", c31="    1.00")], 6, 11,
+     "X IN COLS 11-20: NUMBER TOO LARGE; AT MOST 9999999.99"),
     ("pad-beyond-any-field", [P, card(c1="D", c11=f10("10.00"), c31="99999999")], 6, 31,
      "W IS MORE THAN 120000.00 MM: LARGER THAN THE FIELD AT EVERY SCALE"),
     ("control-card-inside", [P, "*NAME X"], 6, 1, "CONTROL CARD INSIDE A PACKAGE"),
@@ -127,11 +129,11 @@ def test_bad_card_is_reported_and_stops_only_its_package(run_tenzor, cards, card
     assert lines[at - 1].rstrip().endswith("^") and len(lines[at - 1].rstrip()) == 9 + col
 
 
-#: The faults the oracle's reader leaves to the tapes: where the drawing
-#: stands on the machine (its scale, its field, its largest radius), which
-#: verify checks on the tapes TENZOR punches, not on the cards.
-THE_MACHINES = {"scale-off-list", "start-off-field", "leaves-field", "leaves-field-at-scale",
-                "circle-too-big", "coordinate-beyond-any-field", "pad-beyond-any-field"}
+#: The faults the oracle's reader leaves to the tapes: whether the drawing
+#: stays on the machine's field, which verify checks on the tapes TENZOR
+#: punches, not on the cards.
+THE_MACHINES = {"leaves-field", "leaves-field-at-scale", "coordinate-beyond-any-field",
+                "pad-beyond-any-field"}
 
 
 def test_the_oracle_refuses_each_bad_card_at_the_same_card():
@@ -202,6 +204,23 @@ def test_a_card_with_only_a_sequence_number_is_a_blank_card(run_tenzor):
     for name in ("T-small.ptp", "T-large.ptp", "T-cond.ptp"):
         assert (got_out / name).read_bytes() == (want_out / name).read_bytes()
     assert b"DX2000 K10" in (got_out / "T-cond.txt").read_bytes()   # one line, 20 mm
+
+
+@pytest.mark.parametrize("first, listing, column", [
+    ("\ufeffBOARD", "___BOARD.lst", 1),                      # a byte-order mark
+    ("BOARD" + "X" * 76, "BOARDXXXXXXXXXXXXX.lst", 81),       # 81 columns
+    ("*EXECUTE\nBO\tARD", "BO_ARD.lst", 3),                  # a tab, after *EXECUTE
+])
+def test_a_faulty_name_card_is_still_the_name_card(run_tenzor, first, listing, column):
+    """A name card with a bad byte is refused, once: its package opens under
+    it (and is not punched), and the next card is read as data, not taken
+    for the name (which gave a second error, and a listing named after a
+    D card)."""
+    proc, out = run_tenzor(f"{first}\nD               5.00      5.00    1.60\nE\n")
+    err = proc.stderr.decode()
+    assert proc.returncode == 1 and err.count("TENZOR ERROR") == 1, err
+    assert f" COL {column}: " in err and "READS AS A D CARD" not in err, err
+    assert sorted(p.name for p in out.iterdir()) == [listing]
 
 
 def test_an_envelope_beyond_its_table_is_one_error(run_tenzor):
