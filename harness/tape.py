@@ -328,7 +328,8 @@ class _Reader:
                 first = self.data[self.evidence - 1]
                 raise TapeError(n, f"mixed code: digit {d} punched as "
                                    f"{value:02o} (octal), but row {self.evidence} has "
-                                   f"{describe(first)} of code {self.code}")
+                                   f"{describe(first)} of code {self.code}; one of the "
+                                   "two is wrong: --code 8 or --code K names it")
             if self.code == "K":
                 raise TapeError(n, f"parity error: digit {d} punched as "
                                    f"{value:02o}, controlled code expects "
@@ -413,8 +414,9 @@ def _read_frame(rd: _Reader, first: _Row) -> tuple[Frame, dict[str, int]]:
             raise TapeError(row.n, f"expected {_after_field(last)} after "
                                    f"{name}, found {_found(row)}")
     if row.kind != "K":             # only at the start of a frame
+        hint = " (a blank row: is the closing GM missing?)" if row.value == BLANK else ""
         raise TapeError(row.n, "expected X, Y, DX, DY, CYC, K or GM at the "
-                               f"start of a frame, found {_found(row)}")
+                               f"start of a frame, found {_found(row)}{hint}")
     rows["K"] = row.n
     digits: list[int] = []
     k = 0

@@ -383,7 +383,8 @@ contains
             if (rd%evidence > 0) then
                 call new_error(err, 'mixed code: digit ' // str(d) // ' punched as ' // &
                     octal(value, 2) // ' (octal), but row ' // str(rd%evidence) // ' has ' // &
-                    describe_row(iachar(data(rd%evidence:rd%evidence))) // ' of code ' // rd%code, AT_ROW, n)
+                    describe_row(iachar(data(rd%evidence:rd%evidence))) // ' of code ' // rd%code // &
+                    '; one of the two is wrong: --code 8 or --code K names it', AT_ROW, n)
             else if (rd%code == 'K') then
                 call new_error(err, 'parity error: digit ' // str(d) // ' punched as ' // &
                     octal(value, 2) // ', controlled code expects ' // &
@@ -520,8 +521,14 @@ contains
             end if
         end do
         if (row%kind /= KIND_K) then
-            call new_error(err, 'expected X, Y, DX, DY, CYC, K or GM at the start of a frame, ' // &
-                'found ' // describe_row(row%value), AT_ROW, row%n)
+            if (row%value == 0) then
+                call new_error(err, 'expected X, Y, DX, DY, CYC, K or GM at the start of a ' // &
+                    'frame, found ' // describe_row(row%value) // &
+                    ' (a blank row: is the closing GM missing?)', AT_ROW, row%n)
+            else
+                call new_error(err, 'expected X, Y, DX, DY, CYC, K or GM at the start of a ' // &
+                    'frame, found ' // describe_row(row%value), AT_ROW, row%n)
+            end if
             return
         end if
         f%rows(6) = row%n

@@ -328,6 +328,9 @@ DECODE_ERRORS: list[tuple[str, bytes, str, int, str]] = [
      "8", 5, "leading zero in CYC (a number is punched from its first digit that is not 0)"),
     ("missing closing GM", bytes([0o37, *DX3_K10]),
      "8", 8, "missing GM at the end of the tape"),
+    ("closing GM missing before the trailer", bytes([0, 0, 0o37, *DX3_K10, 0, 0]),
+     "8", 10, "expected X, Y, DX, DY, CYC, K or GM at the start of a frame, found digit 0 (00)"
+              " (a blank row: is the closing GM missing?)"),
     ("tape ends inside a frame", bytes([0o37, 0o20, 0o03]),
      "8", 4, "missing GM at the end of the tape (the tape ends inside a frame)"),
     ("missing opening GM", bytes([0, 0, 0]),
@@ -355,7 +358,8 @@ DECODE_ERRORS: list[tuple[str, bytes, str, int, str]] = [
     ("parity error 9", with_gm(0o20, 0o11, 0o16, 0o01, 0o00, 0o17),
      "K", 5, "parity error: digit 9 punched as 11, controlled code expects 31 (octal)"),
     ("mixed code", with_gm(0o20, 0o25, 0o21, 0o05, 0o16, 0o01, 0o00, 0o17),
-     "auto", 7, "mixed code: digit 5 punched as 05 (octal), but row 5 has digit 5 (25) of code K"),
+     "auto", 7, "mixed code: digit 5 punched as 05 (octal), but row 5 has digit 5 (25) of code K;"
+                " one of the two is wrong: --code 8 or --code K names it"),
     ("X with K10", with_gm(0o12, 0o03, 0o16, 0o01, 0o00, 0o17),
      "8", 4, "X/Y only with K11/K13 (this frame is K10)"),
     ("Y with K20", with_gm(0o13, 0o03, 0o20, 0o01, 0o16, 0o02, 0o00, 0o17),
