@@ -107,7 +107,7 @@ C     SHOWN AS ?) AND BLANKS, SO IT MAY BE A NAME CARD
    12    CONTINUE
       END IF
       IKEY = 0
-      IF (CH .EQ. '*' .OR. CH .EQ. '#') CALL TZCKEY(CARD, IKEY)
+      IF (CH .EQ. '*' .OR. CH .EQ. '#') CALL TZCKEY(CARD, IBAD, IKEY)
       GOTO (100, 200, 300, 400, 90), ISTATE
 C     ---- STATE 1: BEFORE THE DATA ------------------------------------
 C     A FAULTY CARD WITH TEXT WHERE A NAME CARD MAY STAND (NOT A CONTROL
@@ -119,6 +119,8 @@ C     NOT TAKEN FOR A NAME (A BYTE-ORDER MARK BEFORE THE NAME, SAY)
      1    CH .NE. '*' .AND. CH .NE. '#') GOTO 250
       IF (IBAD .NE. 0) THEN
          CALL CMERR('TENZOR', NCARD, IBCOL, MSG)
+C        A FAULTY *END FILE STILL ENDS THE DECK
+         IF (IKEY .EQ. 10) ISTATE = 5
          GOTO 10
       END IF
       IF (CARD(1:72) .EQ. ' ') GOTO 10
@@ -145,6 +147,8 @@ C     ---- STATE 2: A NAME CARD IS DUE ---------------------------------
      1    CH .NE. '#') GOTO 250
       IF (IBAD .NE. 0) THEN
          CALL CMERR('TENZOR', NCARD, IBCOL, MSG)
+C        A FAULTY *END FILE STILL ENDS THE DECK
+         IF (IKEY .EQ. 10) ISTATE = 5
          GOTO 10
       END IF
       IF (CARD(1:72) .EQ. ' ') GOTO 10
@@ -201,6 +205,8 @@ C     ---- STATE 4: AFTER THE E CARD -----------------------------------
   400 CONTINUE
       IF (IBAD .NE. 0) THEN
          CALL CMERR('TENZOR', NCARD, IBCOL, MSG)
+C        A FAULTY *END FILE STILL ENDS THE DECK
+         IF (IKEY .EQ. 10) ISTATE = 5
          GOTO 10
       END IF
       IF (CARD(1:72) .EQ. ' ') GOTO 10

@@ -5,16 +5,19 @@ C              DOCS/CARDS.MD. THE REPORT'S REPRODUCTION PRINTS # FOR *
 C              AND _ FOR A BLANK, IN LOWER CASE; ALL OF THAT IS
 C              ACCEPTED.
 C     CARD    (INPUT)  CHARACTER*80  A CARD WITH * OR # IN COLUMN 1
+C     IBAD    (INPUT)  INTEGER  NOT 0 FOR A FAULTY CARD (TZCARD): ITS
+C                               KEYWORD IS TAKEN WHATEVER FOLLOWS IT, SO
+C                               A FAULTY *END FILE STILL ENDS THE DECK
 C     IKEY    (OUTPUT) INTEGER  1 NAME, 2 TIME, 3 PASS, 4 TAPE,
 C                               5 PERSO, 6 MAIN, 7 NO LOAD LIST,
 C                               8 CALL, 9 EXECUTE, 10 END FILE,
 C                               0 NOT A CONTROL CARD OF THE MONITOR
 C     CHANGES: SEE THE HISTORY OF THE REPOSITORY (GIT LOG)
 C=======================================================================
-      SUBROUTINE TZCKEY(CARD, IKEY)
+      SUBROUTINE TZCKEY(CARD, IBAD, IKEY)
       IMPLICIT NONE
       CHARACTER*80 CARD
-      INTEGER IKEY
+      INTEGER IBAD, IKEY
 C     ---- LOCAL -------------------------------------------------------
       INTEGER NKEY
       PARAMETER (NKEY = 10)
@@ -50,7 +53,7 @@ C     WITHOUT BLANKS AND _
       IKEY = 0
       DO 20 I = 1, NKEY
          IF (WORK(1:LKEY(I)) .EQ. KEYS(I)(1:LKEY(I))) THEN
-            IF (LARG(I) .OR. L .EQ. LKEY(I)) IKEY = I
+            IF (LARG(I) .OR. L .EQ. LKEY(I) .OR. IBAD .NE. 0) IKEY = I
             RETURN
          END IF
    20 CONTINUE

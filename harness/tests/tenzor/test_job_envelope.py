@@ -67,3 +67,16 @@ def test_a_control_card_is_taken_or_refused_by_both(run_tenzor, control, taken) 
 def test_a_refused_control_card_names_its_column(run_tenzor, control, column, words) -> None:
     proc, _ = run_tenzor(f"*NAME J\n{control}\n*EXECUTE\n{PACKAGE}")
     assert f"TENZOR ERROR CARD 2 COL {column}: {words}" in proc.stderr.decode()
+
+
+@pytest.mark.parametrize("end", ["*END FILE\t", "*END FILE" + " " * 71 + "X"])
+@pytest.mark.parametrize("e_card", ["E\n", ""])
+def test_a_faulty_end_file_card_still_ends_the_deck(run_tenzor, end, e_card) -> None:
+    """Its fault is reported, and nothing after it is read (the garbage
+    after it is no second error)."""
+    deck = f"ONE\nD               5.00      5.00    0.50\n{e_card}{end}\nGARBAGE\n"
+    proc, _ = run_tenzor(deck)
+    err = proc.stderr.decode()
+    assert proc.returncode == 1
+    assert "GARBAGE" not in err and "CARD 5" not in err and "UNKNOWN CARD TYPE" not in err, err
+    assert err.count("TENZOR ERROR") == (1 if e_card else 2), err
