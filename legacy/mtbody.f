@@ -107,8 +107,12 @@ C        ---- ROUND: CONCENTRIC CIRCLES --------------------------------
          END IF
       ELSE
 C        ---- RECTANGLE: CONCENTRIC RECTANGLES, ONE STROKE A SIDE ------
+C        (AN ODD EXTENT LOSES ITS LAST UNIT, HALF A UNIT EACH SIDE: THE
+C        PAD IS AT MOST 0.005 MM SHORT, NEVER OVER)
          IA = IW - IT
          IB = IH - IT
+         IA = IA - MOD(IA, 2)
+         IB = IB - MOD(IB, 2)
          JX0 = -(IA / 2)
          JY0 = -(IB / 2)
          MN = MIN(IA, IB)

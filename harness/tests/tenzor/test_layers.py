@@ -138,3 +138,27 @@ def test_oracle_and_tenzor_reject_the_same_degenerate_arcs(run_tenzor, arc, col,
     assert proc.returncode == 1
     text = proc.stderr.decode()
     assert f"CARD {no} COL {col}:" in text and words.upper() in text, text
+
+
+@pytest.mark.parametrize("w, h", [(101, 101), (101, 81), (100, 81), (261, 147), (51, 200)])
+def test_an_odd_rectangular_pad_is_short_never_over(run_tenzor, w: int, h: int) -> None:
+    """A pad whose extent less the tool is an odd number of units is drawn
+    half a unit short on each side (RECONSTRUCTION.md, "Odd sizes"): the
+    tool's centre stays within (W - tool)/2 and (H - tool)/2 of the pad's
+    centre, and reaches them to within half a unit."""
+    from harness.tape import decode
+    tool = 50
+    deck = (f"ODD\nP             100.00    100.00{tool / 100:8.2f}{'':16}   10.00\n"
+            f"D              10.00     10.00{w / 100:8.2f}{h / 100:8.2f}\nE\n")
+    proc, out = run_tenzor(deck)
+    assert proc.returncode == 0, proc.stderr.decode()
+    x = y = 0
+    xs, ys = [], []
+    for f in decode((out / "ODD-small.ptp").read_bytes()).frames:
+        if f.k == 10:                           # both ends of a stroke drawn
+            xs += [x - 1000, x + f.dx - 1000]
+            ys += [y - 1000, y + f.dy - 1000]
+        x, y = x + f.dx, y + f.dy
+    for got, extent in ((xs, w - tool), (ys, h - tool)):
+        assert 2 * max(got) <= extent and 2 * -min(got) <= extent, (got, extent)
+        assert 2 * max(got) >= extent - 1 and 2 * -min(got) >= extent - 1, (got, extent)
