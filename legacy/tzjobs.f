@@ -43,12 +43,17 @@ C     ---- /CMSTA/ WHAT THE SIMULATED MACHINE DID WITH EACH TAPE -------
      1               IENDX, IENDY, IENDT
       SAVE /CMSTA/
 C     ---- LOCAL -------------------------------------------------------
-      DOUBLE PRECISION BIGMM
-      PARAMETER (BIGMM = 2.0D9)
+C     THE LENGTHS AND THE TIME ARE WRITTEN BY CMFDP, AS THE LISTING
+C     WRITES THEM (SO THE TWO AGREE TO THE LAST DIGIT, HOWEVER LARGE)
+      CHARACTER*20 SD
+      CHARACTER*10 KEY(3)
+      DOUBLE PRECISION VAL(3)
+      INTEGER J, K, LK
       CHARACTER*6 TAPE(3)
       CHARACTER*12 S1, S2
       INTEGER L, L1, L2, LT, IU
       DATA TAPE / 'small', 'large', 'cond' /
+      DATA KEY / 'drawn_mm', 'travel_mm', 'minutes' /
 C
       CALL CMTRIM(PKFILE, L)
       CALL DVJOB('# EM-703 job sheet, written by TENZOR (JINR P11-10356'
@@ -87,12 +92,21 @@ C
          CALL DVJOB(TAPE(IU)(1:LT) // '.frames = ' // S1(1:L1))
          CALL CMITOA(NROWT(IU), S1, L1)
          CALL DVJOB(TAPE(IU)(1:LT) // '.rows = ' // S1(1:L1))
-         CALL CMFMM(NINT(MIN(DRAWN(IU) * 100.0D0, BIGMM)), S1, L1)
-         CALL DVJOB(TAPE(IU)(1:LT) // '.drawn_mm = ' // S1(1:L1))
-         CALL CMFMM(NINT(MIN(TRAVL(IU) * 100.0D0, BIGMM)), S1, L1)
-         CALL DVJOB(TAPE(IU)(1:LT) // '.travel_mm = ' // S1(1:L1))
-         CALL CMFMM(NINT(MIN(RTIME(IU) * 100.0D0, BIGMM)), S1, L1)
-         CALL DVJOB(TAPE(IU)(1:LT) // '.minutes = ' // S1(1:L1))
+         VAL(1) = DRAWN(IU)
+         VAL(2) = TRAVL(IU)
+         VAL(3) = RTIME(IU)
+         DO 20 J = 1, 3
+            CALL CMFDP(VAL(J), SD)
+C           (CMFDP WRITES AT LEAST 0.00: THE SCAN STOPS IN SD)
+            K = 1
+   15       IF (SD(K:K) .EQ. ' ') THEN
+               K = K + 1
+               GOTO 15
+            END IF
+            CALL CMTRIM(KEY(J), LK)
+            CALL DVJOB(TAPE(IU)(1:LT) // '.' // KEY(J)(1:LK) // ' = '
+     1         // SD(K:))
+   20    CONTINUE
    10 CONTINUE
       RETURN
 C     END OF TZJOBS

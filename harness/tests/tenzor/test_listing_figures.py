@@ -71,3 +71,19 @@ def test_listing_and_job_figures_are_the_tapes(examples, run_tenzor):
                 seen += 1
     assert seen >= 30
     assert half_up_cases >= 5, "too few figures test the rounding"
+
+
+def test_the_job_sheet_gives_the_listings_figures_however_large(run_tenzor) -> None:
+    """A saw of 99 999 teeth of 1 m draws 199 998 km: the job sheet says
+    so, figure for figure with the listing (it was capped at 20 km)."""
+    deck = ("ONE\nP             100.00    100.00\n"
+            "M                                1000.00          99999   10\n"
+            "M                               -1000.00                  10\nE\n")
+    proc, out = run_tenzor(deck)
+    assert proc.returncode == 0, proc.stderr.decode()
+    job = read_job(out / "ONE.job")
+    listing = (out / "ONE.lst").read_text()
+    lines = re.findall(r"DRAWN +([\d.]+) MM +TRAVEL +([\d.]+) MM +RUN TIME +([\d.]+) MIN", listing)
+    assert [tuple(job[f"{t}.{k}"] for k in ("drawn_mm", "travel_mm", "minutes"))
+            for t in ("small", "large", "cond")] == lines
+    assert job["cond.drawn_mm"] == "199998000.00"
