@@ -558,6 +558,9 @@ def parse_deck(text: str) -> list[Package]:
         if state == "done":
             raise CardError(no, f"card after the final E: {card!r}")
         if state == "name":
+            if card in ("C", "E"):
+                raise CardError(no, f"a bare {card} where a name card is due (the package "
+                                    f"before ends with one C or one E)")
             builder = _Builder(card[:18].rstrip(), no)
             if not builder.name.strip():
                 raise CardError(no, "blank package name")

@@ -138,9 +138,7 @@ C        A FAULTY *END FILE STILL ENDS THE DECK
          CALL CMERR('TENZOR', NCARD, 1, 'DATA BEFORE *EXECUTE; THE '
      1      // 'JOB ENVELOPE MUST END WITH AN *EXECUTE CARD')
       END IF
-      CALL TZPBEG(CARD)
-      ISTATE = 3
-      GOTO 10
+      GOTO 240
 C     ---- STATE 2: A NAME CARD IS DUE ---------------------------------
   200 CONTINUE
       IF (IBAD .NE. 0 .AND. LTEXT .EQ. 1 .AND. CH .NE. '*' .AND.
@@ -166,6 +164,17 @@ C        A FAULTY *END FILE STILL ENDS THE DECK
       IF (CH .EQ. '*' .OR. CH .EQ. '#') THEN
          CALL CMERR('TENZOR', NCARD, 1, 'CONTROL CARD AFTER *EXECUTE;'
      1      // ' EXPECTED A PACKAGE NAME CARD (COLS 1-18)')
+         GOTO 10
+      END IF
+C     ---- A NAME CARD (STATES 1 AND 2) --------------------------------
+C     A BARE C OR E WHERE A NAME IS DUE IS NO PACKAGE NAME: AFTER C IT
+C     IS THE END OF THE PACKAGE BEFORE, WRITTEN TWICE (E ENDS THE DECK)
+  240 CONTINUE
+      IF ((CH .EQ. 'C' .OR. CH .EQ. 'E') .AND. CARD(2:72) .EQ. ' ') THEN
+         CALL CMERR('TENZOR', NCARD, 1, 'A BARE ' // CH // ' WHERE A '
+     1      // 'NAME CARD IS DUE; END THE PACKAGE BEFORE WITH ONE C '
+     2      // '(ANOTHER FOLLOWS) OR ONE E (THE LAST)')
+         IF (CH .EQ. 'E') ISTATE = 4
          GOTO 10
       END IF
       CALL TZPBEG(CARD)

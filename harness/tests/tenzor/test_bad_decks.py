@@ -175,15 +175,23 @@ def test_main_naming_another_program_refuses_the_job(run_tenzor):
     ("\n\n   \n", "THE DECK HOLDS NO PACKAGE"),
     ("*NAME X\n*EXECUTE\n", "NO PACKAGE AFTER *EXECUTE"),
     ("*NAME X\n*EXECUTE\n*END FILE\n", "CARD 3 COL 1: NO PACKAGE AFTER *EXECUTE"),
+    (GOOD + "E\n", "CARD 4 COL 1: A BARE E WHERE A NAME CARD IS DUE; END THE PACKAGE BEFORE"),
+    (GOOD + "C\n" + GOOD.replace("GOOD", "TWO").replace("C\n", "E\n"),
+     "CARD 4 COL 1: A BARE C WHERE A NAME CARD IS DUE"),
     (GOOD, "ENDED WITH C BUT NO PACKAGE FOLLOWS"),
     (GOOD.replace("C\n", "E\n") + "MORE\n", "CARD AFTER THE FINAL E CARD"),
     ("*NAME X\nGOOD\nE\n", "DATA BEFORE *EXECUTE"),
     ("*WHAT\n*EXECUTE\nGOOD\nE\n", "UNKNOWN CONTROL CARD"),
 ])
 def test_deck_level_faults(run_tenzor, deck, fragment):
-    proc, _ = run_tenzor(deck)
+    proc, out = run_tenzor(deck)
     assert proc.returncode == 1
     assert fragment in proc.stderr.decode()
+    if "A BARE" in fragment:        # one error, no package named C or E
+        assert proc.stderr.decode().count("TENZOR ERROR") == 1
+        assert not list(out.glob("[CE].lst"))
+        with pytest.raises(CardError, match="card 4: a bare"):
+            parse_deck(deck)
 
 
 def test_a_card_with_only_a_sequence_number_is_a_blank_card(run_tenzor):

@@ -251,6 +251,8 @@ FIXED: list[tuple[str, object, int, str | None]] = [
     ("capacity-pads-MXPAD-MXCRD", package("PADS", [P] + [
         "D" + " " * 9 + f10(i % 400 * 0.5) + f10(i // 400 * 0.5) + "    0.50"
         for i in range(200001)]), 1, "(PARAMETER MXPAD)"),
+    ("capacity-blank-cards-MXCRD", package("BLANKS", [P, GOOD_M] + [""] * 200000), 1,
+     "(PARAMETER MXCRD, BLANK CARDS COUNTED); DROP THE BLANK CARDS OR SPLIT THE BOARD"),
     ("capacity-conductors-MXCON", package("CONS", [P] + [
         c for i in range(50001) for c in (
             "L" + " " * 9 + f10(i % 200 * 2.0) + f10(i // 200 * 2.0),
