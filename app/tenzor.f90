@@ -67,13 +67,13 @@ program tenzor_shell
 
     if (len(deck_path) > 0) then
         call dev_load_deck(deck_path, ok, msg)
-        if (.not. ok) call fail(deck_path // ': ' // msg)
+        if (.not. ok) call fail_io(deck_path // ': ' // msg)
     else
         call dev_load_stdin(ok, msg)
-        if (.not. ok) call fail('standard input: ' // msg)
+        if (.not. ok) call fail_io('standard input: ' // msg)
     end if
-    call dev_set_output(out_dir, ok)
-    if (.not. ok) call fail('cannot create the output directory ' // out_dir)
+    call dev_set_output(out_dir, ok, msg)
+    if (.not. ok) call fail_io('cannot create the output directory ' // out_dir // ': ' // msg)
 
     call tenzor(icode, istrict, irc)
 
@@ -107,5 +107,13 @@ contains
         write(error_unit, '(a)') 'usage: tenzor [DECK] [-o DIR] [--code 8|K] [--strict]  (tenzor --help)'
         stop 2, quiet=.true.
     end subroutine fail
+
+    !> A file that cannot be read or made: its one line, without the usage
+    !> line (the command line was right).
+    subroutine fail_io(text)
+        character(len=*), intent(in) :: text
+        write(error_unit, '(a)') 'tenzor: ' // text
+        stop 2, quiet=.true.
+    end subroutine fail_io
 
 end program tenzor_shell

@@ -148,11 +148,20 @@ contains
     end subroutine load_status
 
     !> Choose (and create) the output directory.
-    subroutine dev_set_output(dir, ok)
+    subroutine dev_set_output(dir, ok, msg)
         character(len=*), intent(in) :: dir
         logical, intent(out) :: ok
+        character(len=:), allocatable, intent(out) :: msg   !< why not, when not ok
+        logical :: there
         out_dir = dir
         call make_dirs(dir, ok)
+        if (ok) return
+        inquire(file=dir, exist=there)
+        if (there) then
+            msg = 'a file of that name is in the way; -o names a directory'
+        else
+            msg = 'it could not be made (is its parent writable?)'
+        end if
     end subroutine dev_set_output
 
     !> The card reader: the next line of the deck, its first 80 columns in card

@@ -24,20 +24,24 @@ def test_help(tenzor_exe):
     assert "usage: tenzor [DECK] [-o DIR] [--code 8|K]" in proc.stdout
 
 
-@pytest.mark.parametrize("args,fragment", [
-    (["--bogus"], "unknown option --bogus"),
-    (["--code"], "--code needs 8 or K"),
-    (["--code", "9", "x.crd"], '--code takes 8 (the "8" code) or K'),
-    (["-o"], "needs a directory"),
-    (["a.crd", "b.crd"], "one deck at a time"),
-    (["/nonexistent/deck.crd"], "cannot open the deck"),
-    (["/"], "cannot read the deck"),
-    ([""], "an empty argument is not a deck"),
+@pytest.mark.parametrize("args,fragment,usage", [
+    (["--bogus"], "unknown option --bogus", True),
+    (["--code"], "--code needs 8 or K", True),
+    (["--code", "9", "x.crd"], '--code takes 8 (the "8" code) or K', True),
+    (["-o"], "needs a directory", True),
+    (["a.crd", "b.crd"], "one deck at a time", True),
+    (["/nonexistent/deck.crd"], "cannot open the deck", False),
+    (["/"], "cannot read the deck", False),
+    ([""], "an empty argument is not a deck", True),
 ])
-def test_usage_errors_exit_2_with_one_clear_line(tenzor_exe, tmp_path, args, fragment):
+def test_usage_errors_exit_2_with_one_clear_line(tenzor_exe, tmp_path, args, fragment, usage):
+    """A usage error gives the usage line after it; a deck that cannot be
+    read is no usage error, and its one line stands alone."""
     proc = subprocess.run([tenzor_exe, *args], capture_output=True, text=True, cwd=tmp_path)
     assert proc.returncode == 2
     assert fragment in proc.stderr
+    assert proc.stderr.count("\n") == (2 if usage else 1), proc.stderr
+    assert ("usage: tenzor" in proc.stderr) == usage
     assert "Fortran runtime" not in proc.stderr and "Backtrace" not in proc.stderr
 
 
@@ -47,6 +51,10 @@ def test_unwritable_output_directory_exits_2(tenzor_exe, tmp_path):
     proc = subprocess.run([tenzor_exe, EXAMPLE5, "-o", blocker / "out"], capture_output=True, text=True)
     assert proc.returncode == 2
     assert "cannot create the output directory" in proc.stderr
+    proc = subprocess.run([tenzor_exe, EXAMPLE5, "-o", blocker], capture_output=True, text=True)
+    assert (proc.returncode, proc.stderr) == (2, f"tenzor: cannot create the output directory "
+                                                 f"{blocker}: a file of that name is in the "
+                                                 f"way; -o names a directory\n")
 
 
 def test_standard_input_and_default_output_directory(tenzor_exe, tmp_path):
