@@ -246,7 +246,8 @@ def test_duplicate_package_names_keep_both_listings(run_tenzor):
     deck = GOOD + GOOD.replace("C\n", "E\n")
     proc, out = run_tenzor(deck)
     assert proc.returncode == 1
-    assert "PACKAGE NAME GOOD IS ALREADY USED" in proc.stderr.decode()
+    assert ("PACKAGE NAME GOOD IS ALREADY USED IN THIS JOB (A NAME USED AGAIN IS FILED AS "
+            "NAME-2, -3, ...)") in proc.stderr.decode()
     assert (out / "GOOD.lst").exists() and (out / "GOOD-2.lst").exists()
     assert not (out / "GOOD-2-cond.ptp").exists()
 
