@@ -72,6 +72,8 @@ def name_card(name: str) -> str:
     """Package name in columns 1-18."""
     if not name.strip() or len(name) > 18 or name[0] in "*# ":
         raise ValueError(f"bad package name {name!r}")
+    if name.rstrip() in ("C", "E"):
+        raise ValueError(f"package name {name!r}: a bare C or E ends a package, it is no name")
     return _card((1, name))
 
 

@@ -22,7 +22,7 @@ C=======================================================================
       CHARACTER*(*) PROG, CARD, WHAT
       INTEGER ICRD, IC1, IC2, NDEC, IDEF, IVAL, LBLANK, IOK
 C     ---- LOCAL -------------------------------------------------------
-      INTEGER IERR, IECOL, L1, L2, L3, LF
+      INTEGER IERR, IECOL, L1, L2, L3, LF, LW
       CHARACTER*12 S1, S2, S3
       CHARACTER*40 FMT, WHERE
       CHARACTER*100 MSG
@@ -36,7 +36,13 @@ C     ---- THE FIELD'S NAME, COLUMNS AND FORMAT ------------------------
       CALL CMITOA(IC1, S1, L1)
       CALL CMITOA(IC2, S2, L2)
       CALL CMITOA(IC2 - IC1 + 1, S3, L3)
-      WHERE = WHAT // ' IN COLS ' // S1(1:L1) // '-' // S2(1:L2)
+C     THE NAME WITHOUT ITS TRAILING BLANKS (A TABLE'S NAMES ARE PADDED)
+      LW = LEN(WHAT)
+    5 IF (LW .GT. 1 .AND. WHAT(LW:LW) .EQ. ' ') THEN
+         LW = LW - 1
+         GOTO 5
+      END IF
+      WHERE = WHAT(1:LW) // ' IN COLS ' // S1(1:L1) // '-' // S2(1:L2)
       IF (NDEC .GT. 0) THEN
          FMT = 'F' // S3(1:L3) // '.2 SUCH AS 12.50 OR 1250'
       ELSE

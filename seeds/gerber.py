@@ -773,7 +773,7 @@ def drill_cards(holes: Sequence[Hole], origin: tuple[float, float]) -> tuple[lis
 
 def package_name(path: str | Path) -> str:
     stem = re.sub(r"[^A-Za-z0-9_-]", "_", Path(path).stem).upper() or "GERBER"
-    return stem[:NAME_LEN]
+    return stem[:NAME_LEN] + ("_" if stem in ("C", "E") else "")   # a bare C or E ends a package
 
 
 def deck_text(conv: Conversion, name: str, holes: Sequence[Hole] = (),
@@ -814,9 +814,10 @@ def _run(args: argparse.Namespace) -> int:
         print(f"gerber2deck: {exc}", file=sys.stderr)
         return 2
     name = args.name or package_name(args.copper)
-    if not re.fullmatch(r"[A-Za-z0-9_-]{1,12}", name):
+    if not re.fullmatch(r"[A-Za-z0-9_-]{1,12}", name) or name in ("C", "E"):
         print(f"gerber2deck: --name {name!r}: 1 to 12 letters, digits, - or _ (so that "
-              f"NAME-DRILL fits the 18 columns of a name card)", file=sys.stderr)
+              f"NAME-DRILL fits the 18 columns of a name card), not a bare C or E (they "
+              f"end a package)", file=sys.stderr)
         return 2
     try:
         g = read_gerber(args.copper)

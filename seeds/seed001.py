@@ -574,7 +574,7 @@ def convert(doc: Any, origin: Point = (0.0, 0.0), tolerance: float = SPLINE_TOL)
 def package_name(path: str | Path) -> str:
     """A package name from a file name: upper case, at most 18 characters."""
     stem = re.sub(r"[^A-Za-z0-9_-]", "_", Path(path).stem).upper() or "DXF"
-    return stem[:18]
+    return stem[:18] + ("_" if stem in ("C", "E") else "")    # a bare C or E ends a package
 
 
 def deck_text(conv: Conversion, name: str, start_mm: Point | None = None,
@@ -630,9 +630,11 @@ def _run(args: argparse.Namespace) -> int:
             raise ValueError(f"--start {args.start}: the start point's place on the field is "
                              f"X,Y, each 0 to {FIELD_MM:g} mm")
         tol = check_tolerance(args.tolerance)
-        if args.name is not None and not re.fullmatch(r"[A-Za-z0-9_-]{1,18}", args.name):
+        if args.name is not None and (not re.fullmatch(r"[A-Za-z0-9_-]{1,18}", args.name)
+                                      or args.name in ("C", "E")):
             raise ValueError(f"--name {args.name!r}: 1 to 18 letters, digits, - or _ (the "
-                             f"name card's columns 1-18, and the stem of TENZOR's files)")
+                             f"name card's columns 1-18, and the stem of TENZOR's files), "
+                             f"not a bare C or E (they end a package)")
     except (ValueError, ArithmeticError) as exc:
         print(f"dxf2deck: {exc}", file=sys.stderr)
         return 2

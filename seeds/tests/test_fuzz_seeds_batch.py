@@ -519,6 +519,7 @@ FOUND = [
     # option that changed nothing
     ("dxf2deck --name ABCDEFGHIJKLMNOPQRSTU", BOARD_DXF, 2, "--name 'ABCDEFGHIJKLMNOPQRSTU': 1 to"),
     ("dxf2deck --name *X", BOARD_DXF, 2, "--name '*X': 1 to 18 letters"),
+    ("dxf2deck --name E", BOARD_DXF, 2, "not a bare C or E (they end a package)"),
     ("split --equal 1000000000000000000000 1", None, 1, "equal frames of at most 9999 pulses, "
                                                        "more than 1000000"),
     ("dxf2deck --tools a,b,c", BOARD_DXF, 2, "--tools a,b,c: 3 finite numbers of mm"),

@@ -188,3 +188,18 @@ def test_tools_off_the_cards_grid_or_range_are_a_usage_error(tmp_path, tools):
     assert proc.returncode == 2 and "--tools" in proc.stderr, proc.stderr
     assert "0.01 to 20.00 mm" in proc.stderr or "3 finite numbers of mm" in proc.stderr
     assert not (tmp_path / "c.crd").exists()
+
+
+def test_a_package_is_never_named_a_bare_c_or_e(tmp_path, run_tenzor):
+    """A bare C or E card ends a package: --name C is refused, and a file
+    named e.gbr makes the package E_, which TENZOR punches."""
+    gbr = tmp_path / "e.gbr"
+    gbr.write_text(BOARD)
+    proc = g2d(gbr, "--name", "C", "-o", tmp_path / "c.crd")
+    assert proc.returncode == 2 and "not a bare C or E (they end a package)" in proc.stderr
+    proc = g2d(gbr, "-o", tmp_path / "e.crd")
+    assert proc.returncode == 0, proc.stderr
+    assert (tmp_path / "e.crd").read_text().splitlines()[3] == "E_"
+    tapes, out = run_tenzor(tmp_path / "e.crd")
+    assert tapes.returncode == 0, tapes.stderr.decode()
+    assert (out / "E_-cond.ptp").exists()
