@@ -53,7 +53,8 @@ C     ---- LOCAL -------------------------------------------------------
       CHARACTER*128 CARET
       CHARACTER*12 S1, S2
       CHARACTER*8 SEQ
-      INTEGER L1, L2, LL, IDX, NERR, LP
+      CHARACTER*5 PFX
+      INTEGER L1, L2, LL, IDX, NERR, LP, K1, KB
 C
       IRCJOB = 1
       SEQ = ' '
@@ -120,8 +121,26 @@ C     THE CARD IMAGE IF IT IS NOT THE LINE JUST PRINTED, THEN THE CARET
          IF (ICOL .GE. 1 .AND. ICOL .LE. 81) CARET(9+ICOL:9+ICOL) = '^'
          CALL DVPRNT(CARET)
       END IF
-      CALL DVPRNT(' *** ' // LINE(1:MIN(LL, 123)))
-      IF (LL .GT. 123) CALL DVPRNT('     ' // LINE(124:MIN(LL, 246)))
+C     THE MESSAGE IN LINES OF AT MOST 128 COLUMNS (5 + 123), BROKEN AT
+C     A BLANK (OR, IN A WORD OF 123 LETTERS, WITHIN IT)
+      PFX = ' ***'
+      K1 = 1
+  200 CONTINUE
+      IF (LL - K1 + 1 .LE. 123) THEN
+         CALL DVPRNT(PFX // LINE(K1:LL))
+      ELSE
+         KB = K1 + 123
+  210    IF (KB .GT. K1 .AND. LINE(KB:KB) .NE. ' ') THEN
+            KB = KB - 1
+            GOTO 210
+         END IF
+         IF (KB .EQ. K1) KB = K1 + 123
+         CALL DVPRNT(PFX // LINE(K1:KB-1))
+         K1 = KB
+         IF (LINE(K1:K1) .EQ. ' ') K1 = K1 + 1
+         PFX = ' '
+         GOTO 200
+      END IF
       LECHO = -1
       RETURN
 C     END OF CMERR

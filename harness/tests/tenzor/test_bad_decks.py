@@ -387,3 +387,20 @@ def test_a_good_package_after_a_failed_write_is_still_punched(run_tenzor, tmp_pa
     assert proc.returncode == 2
     assert (out / "SECOND-cond.ptp").exists()
     assert not list(out.glob("FIRST-*"))
+
+
+def test_a_long_message_is_wrapped_in_the_listing_at_a_blank(run_tenzor):
+    """The listing's lines are at most 128 columns: a longer message goes on
+    under it, broken between words (it was cut inside one: "START PO" /
+    "INT"), and reads, joined, as standard error gives it."""
+    cards = [card(c1="M", c31=f10("-1.00"), c56="   10")]
+    proc, out = run_tenzor(_deck(cards))
+    said = next(line for line in proc.stderr.decode().splitlines() if "LEAVES THE" in line)
+    message = said[said.index("TENZOR ERROR"):]
+    lines = (out / "BAD.lst").read_text().splitlines()
+    at = next(i for i, line in enumerate(lines) if line.startswith(" *** TENZOR ERROR"))
+    wrapped = [lines[at][5:]]
+    while lines[at + len(wrapped)].startswith("     ") and lines[at + len(wrapped)].strip():
+        wrapped.append(lines[at + len(wrapped)][5:])
+    assert len(wrapped) >= 2 and all(len(line) <= 128 for line in lines)
+    assert " ".join(wrapped) == message
