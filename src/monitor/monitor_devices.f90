@@ -106,6 +106,7 @@ contains
         logical, intent(out) :: ok
         character(len=:), allocatable, intent(out) :: msg
         integer :: u, ios, istat
+        integer(int64) :: size
         character(len=256) :: iomsg
         ok = .false.
         deck_label = path
@@ -116,7 +117,14 @@ contains
             msg = 'cannot open the deck: ' // trim(iomsg)
             return
         end if
-        call read_fd(fnum(u), max_deck, deck, istat)
+        ! a file known to be too large is refused unread (a pipe's size is not
+        ! known: read_fd stops one byte past the limit)
+        inquire(unit=u, size=size)
+        if (size > max_deck) then
+            istat = 2
+        else
+            call read_fd(fnum(u), max_deck, deck, istat)
+        end if
         close(u)
         call load_status(istat, ok, msg)
     end subroutine dev_load_deck

@@ -243,3 +243,16 @@ def test_version_is_fpm_tomls(tenzor_exe, em703_exe, program):
     assert proc.returncode == 0 and proc.stderr == ""
     assert proc.stdout.startswith(f"{program} {want['version']} (EM-703 tape subsystem")
     assert proc.stdout.count("\n") == 1
+
+
+def test_a_deck_over_a_gibibyte_is_refused(tenzor_exe, tmp_path):
+    """A regular file over 1 GiB is refused from its size, unread (a sparse
+    file here: nothing is written to disk)."""
+    deck = tmp_path / "huge.crd"
+    with deck.open("wb") as f:
+        f.truncate(2 ** 30 + 1)
+    proc = subprocess.run([tenzor_exe, deck, "-o", tmp_path / "out"], capture_output=True,
+                          text=True)
+    assert (proc.returncode, proc.stderr) == (2, f"tenzor: {deck}: the deck has more than "
+                                                 f"1073741824 bytes; split the job\n")
+    assert not (tmp_path / "out").exists() or not list((tmp_path / "out").iterdir())
