@@ -36,8 +36,9 @@ from .tape import MAX_RADIUS, Frame, sequence_problem
 LAYERS: tuple[str, ...] = ("small", "large", "cond")
 #: Tape letter of an M card (column 2) -> layer key.
 M_TAPES: dict[str, str] = {"S": "small", "B": "large", "L": "cond", " ": "cond"}
-#: The P card's ranges (docs/CARDS.md), in units: a tool, the field (X0, Y0,
-#: DMAX), and the machine's nine scales (N, D).
+#: The P card's ranges (docs/CARDS.md), in units: a tool; the working field
+#: on both axes, 1200 mm (X0, Y0, DMAX; verify's field too); the machine's
+#: nine scales (N, D).
 MAX_TOOL = 2000
 FIELD = 120_000
 SCALES: tuple[tuple[int, int], ...] = ((1, 100), (1, 10), (1, 5), (1, 2), (1, 1), (2, 1),
@@ -74,7 +75,7 @@ class Conductor:
     card: int
     w: int
     points: tuple[tuple[int, int], ...]
-    point_cards: tuple[int, ...] = field(default=(), compare=False)
+    point_cards: tuple[int, ...] = field(compare=False)
 
 
 @dataclass(frozen=True)

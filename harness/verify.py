@@ -58,15 +58,13 @@ from pathlib import Path
 import numpy as np
 
 from . import raster, sim
-from .deck import LAYERS, CardError, Package, parse_deck
+from .deck import FIELD, LAYERS, CardError, Package, parse_deck
 from .shapes import AnyShape, ArcBand, Disc, Layer, Origin, RoundRect, Stroke, run_shapes
 from .tape import (DIGITS_8, DIGITS_K, Frame, Tape, TapeError, decode, frame_rows,
                    frame_text)
 
 #: The machine's accuracy, in units (0.01 mm): the coverage tolerance.
 TOLERANCE = 5
-#: The working field, in units, on both axes (the report's field, 1200 mm).
-FIELD = 120_000
 #: Most reasons about shapes, and most about stray frames, listed per tape
 #: (then a count of the others).
 MAX_REASONS = 15

@@ -376,8 +376,7 @@ def contour_and_cards(pkg) -> tuple[list[Element], list[str]]:
     for _, item in sorted(items, key=lambda t: t[0]):
         if hasattr(item, "points"):
             pts = [(x / 100, y / 100) for x, y in item.points]
-            nos = item.point_cards or (item.card,) * len(pts)
-            for p, q, no in zip(pts, pts[1:], nos[1:]):
+            for p, q, no in zip(pts, pts[1:], item.point_cards[1:]):
                 if p != q:
                     out.append(Seg(*p, *q))
                     labels.append(f"the line to card {no}")
