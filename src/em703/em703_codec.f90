@@ -491,7 +491,7 @@ contains
         integer(int64) :: values(5), value
         integer :: last, index, ndig, digits(2), k
         logical :: got
-        character(len=:), allocatable :: message
+        character(len=:), allocatable :: message, hint
         integer :: prow
         values = 0
         last = 0
@@ -521,14 +521,10 @@ contains
             end if
         end do
         if (row%kind /= KIND_K) then
-            if (row%value == 0) then
-                call new_error(err, 'expected X, Y, DX, DY, CYC, K or GM at the start of a ' // &
-                    'frame, found ' // describe_row(row%value) // &
-                    ' (a blank row: is the closing GM missing?)', AT_ROW, row%n)
-            else
-                call new_error(err, 'expected X, Y, DX, DY, CYC, K or GM at the start of a ' // &
-                    'frame, found ' // describe_row(row%value), AT_ROW, row%n)
-            end if
+            hint = ''
+            if (row%value == 0) hint = ' (a blank row: is the closing GM missing?)'
+            call new_error(err, 'expected X, Y, DX, DY, CYC, K or GM at the start of a ' // &
+                'frame, found ' // describe_row(row%value) // hint, AT_ROW, row%n)
             return
         end if
         f%rows(6) = row%n
