@@ -537,6 +537,28 @@ def _runs(points: list[tuple[float, float]], step: float) -> int:
     return runs
 
 
+def distinct_strokes(drawn: Sequence[AnyShape], stroke_frame: Sequence[int]
+                     ) -> tuple[list[AnyShape], list[int]]:
+    """Each shape of ``drawn`` once, at its first stroke, with the tape
+    frame of that stroke (``stroke_frame`` is parallel to ``drawn``).
+
+    A cycle that goes over the same line again and again (a CYC of 99 999
+    teeth) draws nothing new after its first turn; the coverage scan costs
+    time per shape, and would take hours over the repeats.  What is drawn
+    is the same set of points, and a pixel that the repeats cover is still
+    laid at the first stroke that covers it, as the scan's nearest-shape
+    search (first of equals) would have laid it."""
+    seen: set[AnyShape] = set()
+    shapes: list[AnyShape] = []
+    frames: list[int] = []
+    for shape, fr in zip(drawn, stroke_frame, strict=True):
+        if shape not in seen:
+            seen.add(shape)
+            shapes.append(shape)
+            frames.append(fr)
+    return shapes, frames
+
+
 def coverage_reasons(layer: Layer, run: sim.Run, tool: int, frames: Sequence[Frame],
                      rows: Sequence[int], tol: int = TOLERANCE, pkg: str = "",
                      tape_file: str = "", clip: Box | None = None,
@@ -553,7 +575,7 @@ def coverage_reasons(layer: Layer, run: sim.Run, tool: int, frames: Sequence[Fra
             return None
         return lambda done, total: progress.say(f"{title}: {what} tile {done} of {total}")
 
-    drawn = run_shapes(run, tool)
+    drawn, stroke_frame = distinct_strokes(run_shapes(run, tool), sim.stroke_frames(frames))
     shapes = raster.ShapeSet.of(list(layer.shapes) + drawn)
     try:
         report = raster.compare(run, tool, layer, tol=tol, clip=clip, drawn=drawn,
@@ -562,7 +584,6 @@ def coverage_reasons(layer: Layer, run: sim.Run, tool: int, frames: Sequence[Fra
         return [reason("uncheckable", f"coverage cannot be checked: {exc}")]
     if report.ok:
         return []
-    stroke_frame = sim.stroke_frames(frames)
     p = report.pitch_mm * 100
     reach = max(float(tool), 10 * p)
     bins = math.ceil(reach / p)

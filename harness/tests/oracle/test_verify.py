@@ -16,8 +16,9 @@ import pytest
 from hypothesis import HealthCheck, example, given, settings
 from hypothesis import strategies as st
 
-from harness import cards, tape, verify
+from harness import cards, raster, tape, verify
 from harness.__main__ import main
+from harness.shapes import ArcBand, Stroke
 from harness.tape import Frame
 from harness.tests.strategies import frame_lists
 
@@ -320,6 +321,41 @@ def test_messages_say_what_and_where(board, tmp_path) -> None:
     (r,) = verify.verify(BOARD, out).reasons
     assert "does not end raised at its start point" in r.message
     assert "with the tool down" in r.message
+
+
+def stray_saw(frames: list[Frame]) -> None:
+    """The stray line of :func:`stray_line` drawn 99 999 times over, forth
+    and back, in one cycle: about 200 000 strokes on the same 5 mm."""
+    frames[0:0] = [Frame(dx=500, cyc=99_999, k=10), Frame(dx=-500, k=10)]
+
+
+def test_a_cycle_over_one_line_is_scanned_once(board, tmp_path, monkeypatch) -> None:
+    """The saw's repeats draw nothing new: verify gives the stray line's one
+    reason, with its area, and its coverage scan gets the two strokes of
+    the cycle's first turn, not 199 998 (each costs the scan time: the
+    saw took minutes before, hours for a saw of 1 m teeth)."""
+    once = edited(board, tmp_path / "once", "cond", stray_line)
+    (one,) = verify.verify(BOARD, once).reasons
+    seen: list[int] = []
+    plan = raster.plan
+    monkeypatch.setattr(raster, "plan", lambda ideal, drawn, *a, **k:
+                        seen.append(len(drawn)) or plan(ideal, drawn, *a, **k))
+    saw = edited(board, tmp_path / "saw", "cond", stray_saw)
+    (r,) = verify.verify(BOARD, saw).reasons
+    assert r.kind == "excess" and r.frame == 1, r.message
+    area = one.message.split("nothing: ")[1].split(",")[0]
+    assert r.message.startswith("frame 1 (row 22, DX500 CYC99999 K10 KK) draws where the deck "
+                                f"holds nothing: {area}, "), r.message
+    drawn_once = len([f for f in tape.decode((once / "BOARD-cond.ptp").read_bytes()).frames
+                      if f.k != 20])
+    assert seen and max(seen) == drawn_once - 1 + 2, seen
+
+
+def test_distinct_strokes_keep_each_shape_at_its_first_frame() -> None:
+    a, b = Stroke(((0, 0), (5, 0)), 25), Stroke(((5, 0), (0, 0)), 25)
+    c = ArcBand(0, 0, 100, 0.0, 1.0, 25)
+    assert verify.distinct_strokes([a, b, a, c, b, a, c], [0, 1, 0, 3, 1, 5, 6]) == (
+        [a, b, c], [0, 1, 3])
 
 
 def test_shrunk_circle_is_too_narrow_and_strays(board, tmp_path) -> None:
