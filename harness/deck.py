@@ -30,7 +30,7 @@ from decimal import Decimal
 
 from . import sim
 from .shapes import (TWO_PI, AnyShape, ArcBand, Disc, Layer, Origin, RoundRect, Stroke,
-                     run_shapes)
+                     distinct_strokes, run_shapes)
 from .tape import MAX_RADIUS, Frame, sequence_problem
 
 LAYERS: tuple[str, ...] = ("small", "large", "cond")
@@ -510,7 +510,8 @@ class _Builder:
             except ValueError as exc:
                 no = self.m[key][0][0] if frames else self.first
                 raise CardError(no, f"M frames of tape {key}: {exc}") from None
-            for shape, i in zip(run_shapes(run, tools[key]), sim.stroke_frames(frames)):
+            for shape, i in zip(*distinct_strokes(run_shapes(run, tools[key]),
+                                                  sim.stroke_frames(frames))):
                 layers[key].add(shape, Origin(self.m[key][i][0], "M", i))
         for pad in self.pads:
             key = "small" if pad.size <= self.dmax else "large"

@@ -24,7 +24,7 @@ that asks for it.
 from __future__ import annotations
 
 import math
-from collections.abc import Iterator
+from collections.abc import Iterator, Sequence
 from dataclasses import dataclass, field
 from typing import Protocol, Union
 
@@ -168,6 +168,28 @@ def stroke_shape(s: sim.Stroke, tool: float) -> AnyShape:
 def run_shapes(run: sim.Run, tool: float) -> list[AnyShape]:
     """The shapes covered by a run's strokes with the given tool (units)."""
     return [stroke_shape(s, tool) for s in run.strokes]
+
+
+def distinct_strokes(drawn: Sequence[AnyShape], stroke_frame: Sequence[int]
+                     ) -> tuple[list[AnyShape], list[int]]:
+    """Each shape of ``drawn`` once, at its first stroke, with the tape
+    frame of that stroke (``stroke_frame`` is parallel to ``drawn``).
+
+    A cycle that goes over the same line again and again (a CYC of 99 999
+    turns) draws nothing new after its first turn, while a coverage check
+    costs time and memory per shape (such a saw grew to 24 GB).  The set
+    of points drawn is the same, and a pixel the repeats cover is still
+    laid at the first stroke that covers it, as a nearest-shape search
+    that keeps the first of equals would have laid it."""
+    seen: set[AnyShape] = set()
+    shapes: list[AnyShape] = []
+    frames: list[int] = []
+    for shape, fr in zip(drawn, stroke_frame, strict=True):
+        if shape not in seen:
+            seen.add(shape)
+            shapes.append(shape)
+            frames.append(fr)
+    return shapes, frames
 
 
 @dataclass(frozen=True)

@@ -59,7 +59,8 @@ import numpy as np
 
 from . import raster, sim
 from .deck import FIELD, LAYERS, CardError, Package, parse_deck
-from .shapes import AnyShape, ArcBand, Disc, Layer, Origin, RoundRect, Stroke, run_shapes
+from .shapes import (AnyShape, ArcBand, Disc, Layer, Origin, RoundRect, Stroke,
+                     distinct_strokes, run_shapes)
 from .tape import (DIGITS_8, DIGITS_K, Frame, Tape, TapeError, decode, frame_rows,
                    frame_text)
 
@@ -535,28 +536,6 @@ def _runs(points: list[tuple[float, float]], step: float) -> int:
             runs += 1
         last = p
     return runs
-
-
-def distinct_strokes(drawn: Sequence[AnyShape], stroke_frame: Sequence[int]
-                     ) -> tuple[list[AnyShape], list[int]]:
-    """Each shape of ``drawn`` once, at its first stroke, with the tape
-    frame of that stroke (``stroke_frame`` is parallel to ``drawn``).
-
-    A cycle that goes over the same line again and again (a CYC of 99 999
-    teeth) draws nothing new after its first turn; the coverage scan costs
-    time per shape, and would take hours over the repeats.  What is drawn
-    is the same set of points, and a pixel that the repeats cover is still
-    laid at the first stroke that covers it, as the scan's nearest-shape
-    search (first of equals) would have laid it."""
-    seen: set[AnyShape] = set()
-    shapes: list[AnyShape] = []
-    frames: list[int] = []
-    for shape, fr in zip(drawn, stroke_frame, strict=True):
-        if shape not in seen:
-            seen.add(shape)
-            shapes.append(shape)
-            frames.append(fr)
-    return shapes, frames
 
 
 def coverage_reasons(layer: Layer, run: sim.Run, tool: int, frames: Sequence[Frame],

@@ -18,7 +18,8 @@ from hypothesis import strategies as st
 
 from harness import cards, raster, tape, verify
 from harness.__main__ import main
-from harness.shapes import ArcBand, Stroke
+from harness.deck import parse_deck
+from harness.shapes import ArcBand, Stroke, distinct_strokes
 from harness.tape import Frame
 from harness.tests.strategies import frame_lists
 
@@ -354,8 +355,25 @@ def test_a_cycle_over_one_line_is_scanned_once(board, tmp_path, monkeypatch) -> 
 def test_distinct_strokes_keep_each_shape_at_its_first_frame() -> None:
     a, b = Stroke(((0, 0), (5, 0)), 25), Stroke(((5, 0), (0, 0)), 25)
     c = ArcBand(0, 0, 100, 0.0, 1.0, 25)
-    assert verify.distinct_strokes([a, b, a, c, b, a, c], [0, 1, 0, 3, 1, 5, 6]) == (
+    assert distinct_strokes([a, b, a, c, b, a, c], [0, 1, 0, 3, 1, 5, 6]) == (
         [a, b, c], [0, 1, 3])
+
+
+def test_an_m_card_saw_is_one_shape_a_stroke(run_tenzor) -> None:
+    """The deck's own saw (M cards: 5 mm forth and back, CYC 99 999): the
+    ideal layer holds each of its two strokes once, at its card, and
+    TENZOR's tape of it passes."""
+    deck = cards.deck([cards.CardPackage("MSAW", [
+        cards.p_card(5000, 5000, 40), cards.d_card(500, 500, 160),
+        cards.m_card("L", dx=500, cyc=99_999), cards.m_card("L", dx=-500),
+        cards.l_card(0, 1000), cards.plus_card(1000, 1000)])], envelope=False)
+    (pkg,) = parse_deck(deck)
+    m = [(o.card, o.item) for o in pkg.layers["cond"].origins if o.kind == "M"]
+    assert m == [(4, 0), (5, 1)]
+    proc, out = run_tenzor(deck)
+    assert proc.returncode == 0, proc.stderr.decode()
+    v = verify.verify(deck, out)
+    assert v.passed, v.text()
 
 
 def test_shrunk_circle_is_too_narrow_and_strays(board, tmp_path) -> None:
