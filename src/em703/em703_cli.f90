@@ -7,14 +7,17 @@
 !> Every subcommand reads its arguments the same way, left to right: -h or
 !> --help prints its help; an option it takes (OPTIONS below) reads its value
 !> from the next argument; anything else is its one file (for split: DX or
-!> DY, which may be negative). The limits of the values are the library's
-!> own: the field of em703_sim, the largest number of em703_codec.
+!> DY, which may be negative). Each option may be given once (-o and
+!> --output are one option); a value is never taken from an argument that
+!> is itself an option (--...). The letters of a --code value are read in
+!> either case. The limits of the values are the library's own: the field
+!> of em703_sim, the largest number of em703_codec.
 module em703_cli
     use, intrinsic :: iso_fortran_env, only: int64, real64, output_unit
     use base_args, only: get_arg
     use base_io, only: say
     use base_version, only: VERSION, VERSION_LINE_TAIL
-    use base_text, only: str, parse_int, parse_mm, parse_real
+    use base_text, only: str, lower, parse_int, parse_mm, parse_real
     use em703_codec, only: MAX_NUMBER
     use em703_jobsheet, only: parse_scale, machine_scale
     use em703_sim, only: FIELD_MM
@@ -74,14 +77,25 @@ contains
     !> help text and with status 2 after a usage error.
     subroutine parse_command_line(cli)
         type(cli_t), intent(out) :: cli
-        character(len=:), allocatable :: arg
+        character(len=:), allocatable :: arg, given
         integer :: nargs, i, k, nmove
 
         nargs = command_argument_count()
         if (nargs == 0) call usage_error('', 'no subcommand')
         cli%command = get_arg(1)
         if (cli%command == '-h' .or. cli%command == '--help' .or. cli%command == 'help') then
-            call help('')
+            if (cli%command == 'help' .and. nargs >= 2) then
+                ! em703 help SUBCOMMAND: that subcommand's help
+                arg = get_arg(2)
+                if (.not. any(SUBCOMMANDS == arg) .or. len(arg) == 0) call usage_error('', &
+                    'no help on "' // arg // '": the subcommands are ' // &
+                    'list sim svg gcode gerber drill punch view split html check')
+                if (nargs > 2) call usage_error('', 'help takes one subcommand, not "' // &
+                    get_arg(3) // '" too')
+                call help(arg)
+            else
+                call help('')
+            end if
             stop 0, quiet=.true.
         end if
         if (cli%command == '--version') then
@@ -101,6 +115,7 @@ contains
         cli%frame = ''
         if (cli%command == 'punch') cli%code = ''
         nmove = 0
+        given = ' '
         i = 2
         do while (i <= nargs)
             arg = get_arg(i)
@@ -108,6 +123,10 @@ contains
                 call help(cli%command)
                 stop 0, quiet=.true.
             else if (takes(OPTIONS(k), arg)) then
+                if (arg == '--output') arg = '-o'
+                if (index(given, ' ' // arg // ' ') > 0) call usage_error(cli%command, &
+                    'option ' // get_arg(i) // ' given twice: give it once')
+                given = given // arg // ' '
                 call take_option(cli, arg, i, nargs)
             else if (cli%command == 'split') then
                 call take_move(cli, arg, nmove)
@@ -128,6 +147,8 @@ contains
             call need_file(cli%command, cli%file, 'TAPE or JOB')
             if (len(cli%frame) > 0 .and. cli%dialect /= 'iso-1970s') call usage_error('gcode', &
                 '--frame is for --dialect iso-1970s (seed 004''s frames), not ' // cli%dialect)
+            if (cli%use_z .and. cli%dialect == 'iso-1970s') call usage_error('gcode', &
+                '--z is for linuxcnc and grbl: iso-1970s always moves the tool up and down in Z')
         case ('punch')
             if (len(cli%code) == 0) call usage_error('punch', 'missing --code iso|eia')
             call need_file('punch', cli%file, 'FILE (the text to punch)')
@@ -188,25 +209,23 @@ contains
             v = option_value(sub, i, nargs)
             select case (sub)
             case ('punch')
-                select case (v)
-                case ('iso', 'ISO')
-                    cli%code = 'iso'
-                case ('eia', 'EIA')
-                    cli%code = 'eia'
+                select case (lower(v))
+                case ('iso', 'eia')
+                    cli%code = lower(v)
                 case default
                     call usage_error('punch', '--code takes iso or eia, not "' // v // '"')
                 end select
             case ('view')
-                select case (v)
+                select case (lower(v))
                 case ('auto', 'em703', 'iso', 'eia')
-                    cli%code = v
+                    cli%code = lower(v)
                 case default
                     call usage_error('view', '--code takes auto, em703, iso or eia, not "' // v // '"')
                 end select
             case default
-                select case (v)
-                case ('8', 'K', 'auto')
-                    cli%code = v
+                select case (lower(v))
+                case ('8', 'auto')
+                    cli%code = lower(v)
                 case ('k')
                     cli%code = 'K'
                 case default
@@ -271,8 +290,12 @@ contains
         integer, intent(in) :: nargs
         character(len=:), allocatable :: v
         if (i >= nargs) call usage_error(sub, 'option ' // get_arg(i) // ' needs a value')
+        v = get_arg(i + 1)
+        if (len(v) > 2) then
+            if (v(1:2) == '--') call usage_error(sub, 'option ' // get_arg(i) // &
+                ' needs a value, not the option ' // v // ' (a file of that name: ./' // v // ')')
+        end if
         i = i + 1
-        v = get_arg(i)
     end function option_value
 
     !> The one file argument of a subcommand.

@@ -403,7 +403,7 @@ contains
         character(len=200) :: labels(NLAYERS)
         integer(int64) :: tools(NLAYERS)
         type(text_t) :: text
-        character(len=:), allocatable :: tmp
+        character(len=:), allocatable :: tmp, title
         type(error_t), allocatable :: err
         logical :: complete
         if (ends_with(path, '.job')) then
@@ -425,14 +425,14 @@ contains
             labels(1) = 'tape ' // path
             tools(1) = 0
             if (.not. opened(out, text, tmp, status)) return
+            title = 'EM-703 tape, code ' // runs(1)%code // ', ' // str(runs(1)%nframes) // &
+                    trim(merge(' frame ', ' frames', runs(1)%nframes == 1))
             if (dialect == 'iso-1970s') then
-                call iso_program(runs(1:1), labels(1:1), 'EM-703 tape, code ' // runs(1)%code // &
-                                 ', ' // str(runs(1)%nframes) // ' frames', chord_tol, text, err, &
+                call iso_program(runs(1:1), labels(1:1), title, chord_tol, text, err, &
                                  frame_kind(frame))
             else
-                call gcode_program(runs(1:1), labels(1:1), tools(1:1), 'EM-703 tape, code ' // &
-                                   runs(1)%code // ', ' // str(runs(1)%nframes) // ' frames', &
-                                   chord_tol, use_z, text, dialect)
+                call gcode_program(runs(1:1), labels(1:1), tools(1:1), title, chord_tol, use_z, &
+                                   text, dialect)
             end if
         end if
         if (allocated(err)) then

@@ -55,7 +55,7 @@ module em703_iso
                          SEG_ARC, SEG_DOT, SEG_RAISE, LINE_SPEED, ARC_SPEED
     use em703_gcode, only: chord_count, plain => clean
     use em703_split, only: frames_needed, split_frame
-    use base_text, only: text_t, str, octal
+    use base_text, only: text_t, str, octal, fixed, mm
     use base_error, only: error_t
     implicit none
     private
@@ -175,6 +175,7 @@ contains
         call comment(text, 'lines F' // two(geometric_code(LINE_SPEED)) // ', arcs F' // &
             two(geometric_code(ARC_SPEED)) // ', F the code of 1.12 to the power F mm/min, tool ' // &
             'down ' // Z_DOWN // ', up ' // Z_UP)
+        if (chord_tol > 0) call comment(text, 'arcs as chords within ' // fixed(chord_tol, 4) // ' mm')
         select case (st%frame)
         case (FRAME_FIXED)
             call comment(text, 'fixed frames of ' // str(FIXED_LENGTH) // ' characters, no ' // &
@@ -390,7 +391,9 @@ contains
                 st%y = s%y1
             else
                 ! chords (asked for, or an arc too large for I and J): within
-                ! 0.01 mm when not asked for
+                ! 0.01 mm when not asked for, and said so
+                if (chord_tol <= 0) call comment(text, 'an arc of radius ' // mm(nint(s%r, int64)) // &
+                    ' mm, too large for the six digits of I and J, as chords within 0.0100 mm')
                 r0 = s%r / 100
                 r1 = hypot(real(s%x1 - s%cx, real64), real(s%y1 - s%cy, real64)) / 100
                 cx = real(s%cx, real64) / 100

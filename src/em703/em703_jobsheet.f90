@@ -46,7 +46,8 @@ contains
         type(job_t), intent(out) :: job
         type(error_t), allocatable, intent(out) :: err
         character(len=:), allocatable :: text, line, key, value
-        integer :: i, j, lineno, p, l
+        integer :: i, j, lineno, p, l, c
+        character(len=3) :: octal
         logical :: seen_tape(NLAYERS), seen_tool(NLAYERS), ok
         integer(int64) :: v
 
@@ -80,10 +81,22 @@ contains
             if (len(line) > 0) then
                 if (line(len(line):) == achar(13)) line = line(1:len(line) - 1)
             end if
+            do p = 1, len(line)
+                c = iachar(line(p:p))
+                if ((c < 32 .and. c /= 9) .or. c > 126) then
+                    write(octal, '(o3.3)') c
+                    call new_error(err, 'byte ' // octal // ' (octal) is not text: a job ' // &
+                                   'sheet is the text NAME.job that TENZOR writes beside ' // &
+                                   'the tapes (a tape is read by em703 list)', AT_LINE, lineno, p)
+                    err%file = path
+                    return
+                end if
+            end do
             if (len_trim(line) == 0) cycle
             if (line(1:1) == '#') cycle
             p = index(line, ' = ')
             if (p == 0) then
+                if (len(line) > 60) line = line(1:60) // '...'
                 call fail('not a "key = value" line: "' // line // '"')
                 return
             end if

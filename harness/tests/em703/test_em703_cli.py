@@ -38,6 +38,31 @@ def test_help(em703_exe) -> None:
             assert max(len(line) for line in text.splitlines()) <= 80
 
 
+def test_help_on_a_subcommand_is_its_help(em703_exe) -> None:
+    for sub in SUBCOMMANDS + ["drill", "split", "check"]:
+        assert run(em703_exe, "help", sub, check=0).stdout == \
+            run(em703_exe, sub, "--help", check=0).stdout
+
+
+@pytest.mark.parametrize("sub, code, read", [
+    ("list", "k", "K"), ("list", "AUTO", "auto"), ("sim", "Auto", "auto"),
+    ("view", "EM703", "em703"), ("view", "ISO", "iso"), ("punch", "Eia", "eia")])
+def test_the_letters_of_a_code_are_read_in_either_case(em703_exe, example_tapes, tmp_path,
+                                                       sub, code, read) -> None:
+    if sub == "punch":
+        src = tmp_path / "p.ngc"
+        src.write_text("G00 X1\n")
+        args = [["--code", c, "-o", tmp_path / f"{c}.ptp", src] for c in (code, read)]
+        for a in args:
+            run(em703_exe, "punch", *a, check=0)
+        assert (tmp_path / f"{read}.ptp").stat().st_size > 0
+        assert (tmp_path / f"{code}.ptp").read_bytes() == (tmp_path / f"{read}.ptp").read_bytes()
+        return
+    tape = example_tapes[0]
+    a, b = (run(em703_exe, sub, tape, "--code", c) for c in (code, read))
+    assert (a.returncode, a.stdout, a.stderr) == (b.returncode, b.stdout, b.stderr)
+
+
 @pytest.mark.parametrize("args, words", [
     ([], "no subcommand"),
     (["frobnicate"], 'unknown subcommand "frobnicate"'),
@@ -62,6 +87,14 @@ def test_help(em703_exe) -> None:
     (["html"], "missing JOB"),
     (["html", "a.job", "--utf8"], "unknown option --utf8"),
     (["html", "a.job", "-o"], "option -o needs a value"),
+    (["list", "a.ptp", "--code", "8", "--code", "K"], "option --code given twice: give it once"),
+    (["gcode", "a.job", "-o", "x", "--output", "y"], "option --output given twice"),
+    (["list", "--bare", "a.ptp", "--bare"], "option --bare given twice"),
+    (["sim", "a.ptp", "--svg", "--tool", "1"],
+     "option --svg needs a value, not the option --tool (a file of that name: ./--tool)"),
+    (["list", "a.ptp", "--code", "ISO"], '--code takes 8, K or auto, not "ISO"'),
+    (["help", "frobnicate"], 'no help on "frobnicate": the subcommands are list sim'),
+    (["help", "list", "sim"], 'help takes one subcommand, not "sim" too'),
 ])
 def test_usage_errors_are_one_line_with_status_2(em703_exe, args, words) -> None:
     proc = run(em703_exe, *args, check=2)
@@ -112,6 +145,17 @@ def test_a_bad_job_sheet_is_status_1_naming_the_line(em703_exe, example_jobs, tm
     for sub in ("svg", "gcode", "gerber", "html"):
         line = one_line(run(em703_exe, sub, bad, check=1))
         assert line == f'{bad}: line 4: not a "key = value" line: "scale: 1:1"'
+    tape_job = tmp_path / "tape.job"
+    tape_job.write_bytes((tmp_path / keys_of(job)["cond.tape"]).read_bytes())
+    for sub in ("svg", "gcode", "gerber", "drill", "html"):
+        line = one_line(run(em703_exe, sub, tape_job, check=1))
+        assert line == (f"{tape_job}: line 1, column 1: byte 000 (octal) is not text: a job "
+                        "sheet is the text NAME.job that TENZOR writes beside the tapes (a "
+                        "tape is read by em703 list)")
+    long = tmp_path / "long.job"
+    long.write_text("name = X\n" + "7" * 100_000 + "\n")
+    line = one_line(run(em703_exe, "svg", long, check=1))
+    assert line == f'{long}: line 2: not a "key = value" line: "{"7" * 60}..."'
     no_tool = tmp_path / "no_tool.job"
     no_tool.write_text("\n".join(l for l in lines if not l.startswith("cond.tool_mm")) + "\n")
     line = one_line(run(em703_exe, "gerber", no_tool, check=1))

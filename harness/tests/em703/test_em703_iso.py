@@ -207,3 +207,35 @@ def test_a_text_that_is_not_ascii_is_read_as_a_tape_and_says_why(em703_exe, tmp_
     assert proc.stderr.decode().endswith(": not an ISO tape, or a misread row (read as a tape image "
                                          "for its bytes above 127, the first at row 13, line 2 as "
                                          "text: a program as text must be ASCII)\n")
+
+
+def test_an_arc_too_large_for_i_and_j_is_chords_and_says_so(em703_exe, tmp_path) -> None:
+    """I and J hold 999.99 mm: a circle of that radius is one G02; one of
+    1000.00 mm is G01 chords within 0.01 mm of it, after a comment that says
+    so; --chords says so once at the top, and --z is refused (the dialect
+    always moves Z)."""
+    from harness.tape import Frame, encode
+    for r in (99_999, 100_000):
+        tape = tmp_path / f"c{r}.ptp"
+        tape.write_bytes(encode([Frame(x=r, k=13)]))
+        text = _em(em703_exe, "gcode", "--dialect", "iso-1970s", tape).stdout.decode()
+        assert "(EM-703 tape, code 8, 1 frame, block format" in text
+        blocks = [b for p in iso_programs(text) for b in p]
+        if r == 99_999:
+            assert "N003 G02 X+000000 Y+000000 I-999990 J+000000 F65" in blocks
+            assert "chords" not in text
+            continue
+        assert ("(an arc of radius 1000.00 mm, too large for the six digits of I and J, as "
+                "chords within 0.0100 mm)") in text.splitlines()
+        assert not any(" G02" in b or " G03" in b for b in blocks)
+        pts = iso_points(text)
+        cx, cy = -r * 10, 0                                   # 0.001 mm
+        assert pts[-1] == (0, 0) and len(pts) > 100
+        for (ax, ay), (bx, by) in zip(pts, pts[1:]):
+            for x, y in ((ax, ay), ((ax + bx) / 2, (ay + by) / 2)):
+                assert abs(math.hypot(x - cx, y - cy) - r * 10) <= 10 + 8
+    asked = _em(em703_exe, "gcode", "--dialect", "iso-1970s", "--chords", "0.5",
+                tmp_path / "c99999.ptp").stdout.decode()
+    assert asked.splitlines()[3] == "(arcs as chords within 0.5000 mm)"
+    z = _em(em703_exe, "gcode", "--dialect", "iso-1970s", "--z", tmp_path / "c99999.ptp")
+    assert z.returncode == 2 and b"--z is for linuxcnc and grbl" in z.stderr
