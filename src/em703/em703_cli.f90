@@ -129,6 +129,10 @@ contains
                 given = given // arg // ' '
                 call take_option(cli, arg, i, nargs)
             else if (cli%command == 'split') then
+                if (len(arg) > 1) then
+                    if (arg(1:1) == '-' .and. verify(arg(2:2), '0123456789') /= 0) &
+                        call usage_error('split', 'unknown option ' // arg)
+                end if
                 call take_move(cli, arg, nmove)
             else
                 call take_file(cli%command, cli%file, arg)
@@ -204,7 +208,8 @@ contains
             end select
         case ('-o', '--output')
             cli%out = option_value(sub, i, nargs)
-            if (sub == 'punch' .and. len(cli%out) == 0) call usage_error('punch', '-o needs a file name')
+            if (len(cli%out) == 0) call usage_error(sub, get_arg(i - 1) // ' needs a file name, ' // &
+                'not an empty one (without it the output goes to standard output)')
         case ('--code')
             v = option_value(sub, i, nargs)
             select case (sub)

@@ -168,16 +168,17 @@ contains
     end subroutine cannot_write
 
     !> Status 1 (and a message naming the row) when a run executes more
-    !> frames than the drawing and program writers take (MAX_DRAWN).
-    integer function too_long(path, run) result(status)
-        character(len=*), intent(in) :: path
+    !> frames than the drawing and program writers take (MAX_DRAWN); who:
+    !> the writer asked for (svg, gcode, gerber, drill, sim --svg).
+    integer function too_long(path, run, who) result(status)
+        character(len=*), intent(in) :: path, who
         type(run_t), intent(in) :: run
         type(error_t), allocatable :: err
         status = EXIT_OK
         if (run%executed <= MAX_DRAWN) return
         call new_error(err, 'the tape runs ' // str(run%executed) // ' frames (cycles unrolled): ' // &
-            'more than the ' // str(MAX_DRAWN) // ' that svg, gcode and gerber write one by one ' // &
-            '(sim takes any tape)', AT_ROW, run%long_row)
+            'more than the ' // str(MAX_DRAWN) // ' that ' // who // ' writes one by one ' // &
+            '(sim and html take any tape)', AT_ROW, run%long_row)
         err%file = path
         call say(error_text(err))
         status = EXIT_INPUT
@@ -301,7 +302,7 @@ contains
         if (.not. opened('', text, tmp, status)) return
         call close_output('', text, tmp, status)
         if (len(svg_path) > 0) then
-            if (too_long(path, run) /= EXIT_OK) then
+            if (too_long(path, run, 'sim --svg') /= EXIT_OK) then
                 status = EXIT_INPUT
                 return
             end if
@@ -323,8 +324,9 @@ contains
     !> complete: every tape was run and can be drawn (status 1 then means a
     !> tape that does not end at its start point, a warning the output can
     !> live with).
-    subroutine load_job(path, job, runs, labels, tools, status, complete)
+    subroutine load_job(path, job, runs, labels, tools, status, complete, who)
         character(len=*), intent(in) :: path
+        character(len=*), intent(in) :: who   !< the command, for too_long
         type(job_t), intent(out) :: job
         type(run_t), intent(out) :: runs(NLAYERS)
         character(len=200), intent(out) :: labels(NLAYERS)
@@ -352,7 +354,7 @@ contains
             tools(l) = job%layers(l)%tool
             call load_run(job%layers(l)%path, job%code, runs(l), status, job%layers(l), path)
             if (status /= EXIT_OK) return
-            status = too_long(job%layers(l)%path, runs(l))
+            status = too_long(job%layers(l)%path, runs(l), who)
             if (status /= EXIT_OK) return
             if (l < NLAYERS .and. (runs(l)%end_x /= 0 .or. runs(l)%end_y /= 0)) then
                 call say(job%layers(l)%path // ': the tape ends at (' // mm(runs(l)%end_x) // &
@@ -366,6 +368,16 @@ contains
         end do
         complete = .true.
         if (open_end) status = EXIT_INPUT
+        ! A job sheet without a code line: for the outputs' headings, the code
+        ! the tapes told (a tape without a digit 3, 5, 6 or 9 tells neither)
+        if (job%code == 'auto') then
+            if (any(runs%evidence > 0 .and. runs%code == '8')) then
+                job%code = trim(merge('8 and K', '8      ', &
+                                      any(runs%evidence > 0 .and. runs%code == 'K')))
+            else
+                job%code = trim(merge('K     ', '8 or K', any(runs%evidence > 0)))
+            end if
+        end if
     end subroutine load_job
 
     !> em703 svg: all tapes of a job in one drawing.
@@ -380,7 +392,7 @@ contains
         character(len=:), allocatable :: tmp
         integer :: l
         logical :: complete
-        call load_job(path, job, runs, labels, tools, status, complete)
+        call load_job(path, job, runs, labels, tools, status, complete, 'svg')
         if (.not. complete) return
         do l = 1, NLAYERS
             keys(l) = job%layers(l)%key
@@ -407,7 +419,7 @@ contains
         type(error_t), allocatable :: err
         logical :: complete
         if (ends_with(path, '.job')) then
-            call load_job(path, job, runs, labels, tools, status, complete)
+            call load_job(path, job, runs, labels, tools, status, complete, 'gcode')
             if (.not. complete) return
             if (.not. opened(out, text, tmp, status)) return
             if (dialect == 'iso-1970s') then
@@ -420,7 +432,7 @@ contains
         else
             call load_run(path, 'auto', runs(1), status)
             if (status /= EXIT_OK) return
-            status = too_long(path, runs(1))
+            status = too_long(path, runs(1), 'gcode')
             if (status /= EXIT_OK) return
             labels(1) = 'tape ' // path
             tools(1) = 0
@@ -454,13 +466,15 @@ contains
         character(len=:), allocatable :: tmp
         integer :: l
         logical :: complete
-        call load_job(path, job, runs, labels, tools, status, complete)
+        real(real64) :: far
+        call load_job(path, job, runs, labels, tools, status, complete, 'gerber')
         if (.not. complete) return
         do l = 1, NLAYERS
-            if (max(abs(runs(l)%xmin), abs(runs(l)%xmax), abs(runs(l)%ymin), &
-                    abs(runs(l)%ymax)) >= 999999.0_real64) then
-                call say(job%layers(l)%path // ': the drawing reaches beyond 999999 mm, ' // &
-                         'more than the Gerber 6.6 format holds')
+            far = max(abs(runs(l)%xmin), abs(runs(l)%xmax), abs(runs(l)%ymin), abs(runs(l)%ymax))
+            if (far > 999999.999999_real64) then
+                call say(job%layers(l)%path // ': the drawing reaches ' // fixed(far, 2) // &
+                         ' mm from the start point, beyond the 999999.999999 mm that the ' // &
+                         'Gerber 6.6 format holds')
                 status = EXIT_INPUT
                 return
             end if
@@ -483,7 +497,7 @@ contains
         character(len=:), allocatable :: tmp
         integer :: l, n
         logical :: complete
-        call load_job(path, job, runs, labels, tools, status, complete)
+        call load_job(path, job, runs, labels, tools, status, complete, 'drill')
         if (.not. complete) return
         n = 0
         allocate(holes(0))
@@ -569,6 +583,12 @@ contains
         integer :: row
         call read_input(path, bytes, status)
         if (status /= EXIT_OK) return
+        if (first > 1 .and. first > len(bytes)) then
+            call say(path // ': --rows ' // str(first) // ':' // str(last) // ' begins after ' // &
+                     'the tape''s last row, ' // str(len(bytes)) // ' (rows are numbered from 1)')
+            status = EXIT_USAGE
+            return
+        end if
         c = code
         if (c == 'auto') c = guess_code(bytes)
         row = 0
@@ -713,6 +733,12 @@ contains
             prog = bytes
         end if
         call iso_check(prog, msgs, nerr, nprog, nblocks, frame_kind(frame))
+        if (nerr == 0 .and. nprog == 0) then
+            call say(path // ': no program in it: a program is a line "%", its numbered ' // &
+                     'blocks (N001 ...), and "%"')
+            status = EXIT_INPUT
+            return
+        end if
         if (nerr > 0) then
             lines = msgs%value()
             k = 1

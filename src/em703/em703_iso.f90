@@ -783,7 +783,9 @@ contains
             read (s(2:4), *) n
             if (len(s) > 4) then
                 if (s(5:5) /= ' ') then
-                    call fault(n, 'the block number has three digits')
+                    q = index(s // ' ', ' ')
+                    call fault(n, 'the block number has three digits, not "' // &
+                               shown(s(1:min(q - 1, len(s)))) // '" (a blank after them)')
                     return
                 end if
             end if

@@ -14,8 +14,9 @@ module em703_jobsheet
     public :: job_t, layer_t, read_job, parse_scale, machine_scale, LAYER_KEYS, NLAYERS
 
     integer, parameter :: NLAYERS = 3
-    !> The widest tool a job sheet may name, 0.01 mm: the field's 1 200 mm.
-    integer(int64), parameter :: MAX_TOOL = 120000
+    !> The widest tool a job sheet may name, and the farthest start point, in
+    !> 0.01 mm: the field's 1 200 mm.
+    integer(int64), parameter :: FIELD_UNITS = 120000
     character(len=5), parameter :: LAYER_KEYS(NLAYERS) = ['small', 'large', 'cond ']
 
     !> One tape of a job: its key, the file as named and as a path, its tool.
@@ -115,15 +116,18 @@ contains
                 job%code = value
             case ('scale')
                 call parse_scale(value, job%num, job%den, ok)
+                if (ok) ok = machine_scale(job%num, job%den)
                 if (.not. ok) then
-                    call fail('scale must be N:D with N, D from 1 to 100, not "' // value // '"')
+                    call fail('scale must be one of the machine''s scales 1:100 1:10 1:5 1:2 ' // &
+                              '1:1 2:1 5:1 50:1 100:1, not "' // value // '"')
                     return
                 end if
             case ('start_x_mm', 'start_y_mm')
                 call parse_mm(value, v, ok)
+                if (ok) ok = v >= 0 .and. v <= FIELD_UNITS
                 if (.not. ok) then
-                    call fail(key // ' must be millimetres with at most two decimals, not "' // &
-                              value // '"')
+                    call fail(key // ' must be a place on the field, 0.00 to 1200.00 mm (two ' // &
+                              'decimals at most), not "' // value // '"')
                     return
                 end if
                 if (key == 'start_x_mm') then
@@ -144,7 +148,7 @@ contains
                         seen_tape(l) = .true.
                     else if (key == trim(LAYER_KEYS(l)) // '.tool_mm') then
                         call parse_mm(value, v, ok)
-                        if (.not. ok .or. v <= 0 .or. v > MAX_TOOL) then
+                        if (.not. ok .or. v <= 0 .or. v > FIELD_UNITS) then
                             call fail(key // ' must be a tool width in mm (above 0, at most ' // &
                                       '1200.00, the field; two decimals), ' // &
                                       'not "' // value // '"')

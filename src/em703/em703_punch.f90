@@ -162,8 +162,10 @@ contains
             if (c == 13) cycle
             if (c > 127 .or. (c < 32 .and. c /= 10 .and. c /= 9) .or. c == 127) then
                 call new_error(err, 'byte ' // octal(c, 3) // ' (octal) is not a character of ' // &
-                    'the ' // upper(code) // ' code (ASCII letters, digits, signs, tab, newline)', &
-                    AT_LINE, line, col)
+                    'the ' // upper(code) // ' code (' // trim(merge( &
+                    'ASCII letters, digits, signs, tab, newline                 ', &
+                    'letters, digits, space - + . , / ( ) %, tab, newline       ', code == 'iso')) // &
+                    ')', AT_LINE, line, col)
                 return
             end if
             if (code == 'iso') then

@@ -11,7 +11,7 @@ import pytest
 
 from harness.tape import Frame, encode
 
-from harness.tests.helpers import run
+from harness.tests.helpers import run, write_job
 
 SUBCOMMANDS = ["list", "sim", "svg", "gcode", "gerber", "punch", "view", "html"]
 
@@ -95,6 +95,10 @@ def test_the_letters_of_a_code_are_read_in_either_case(em703_exe, example_tapes,
     (["list", "a.ptp", "--code", "ISO"], '--code takes 8, K or auto, not "ISO"'),
     (["help", "frobnicate"], 'no help on "frobnicate": the subcommands are list sim'),
     (["help", "list", "sim"], 'help takes one subcommand, not "sim" too'),
+    (["gerber", "a.job", "-o", ""], "-o needs a file name, not an empty one"),
+    (["svg", "a.job", "--output", ""], "--output needs a file name, not an empty one"),
+    (["split", "--bogus", "5", "5"], "unknown option --bogus"),
+    (["split", "-x", "5", "5"], "unknown option -x"),
 ])
 def test_usage_errors_are_one_line_with_status_2(em703_exe, args, words) -> None:
     proc = run(em703_exe, *args, check=2)
@@ -278,3 +282,55 @@ def test_output_to_dev_stdout_and_a_planted_link(em703_exe, example_jobs, tmp_pa
     assert victim.read_text() == "precious"
     assert not out.is_symlink() and out.read_bytes() == piped.stdout
     assert sorted(p.name for p in tmp_path.iterdir()) == ["victim", "x.ngc"]
+
+
+def test_view_rows_after_the_tape_are_refused(em703_exe, example_tapes) -> None:
+    tape = example_tapes[0]
+    n = tape.stat().st_size
+    line = one_line(run(em703_exe, "view", tape, "--rows", f"{n + 1}:{n + 9}", check=2))
+    assert line == (f"{tape}: --rows {n + 1}:{n + 9} begins after the tape's last row, {n} "
+                    "(rows are numbered from 1)")
+    last = run(em703_exe, "view", tape, "--rows", f"{n}:{n + 9}", check=0).stdout.decode()
+    assert f"{n:>5} " in last or f" {n} " in last, last
+
+
+def test_split_takes_a_negative_move(em703_exe) -> None:
+    assert run(em703_exe, "split", "-5", "5", check=0).stdout == b"-5 5\n"
+
+
+@pytest.mark.parametrize("key, value, words", [
+    ("scale", "3:1", "scale must be one of the machine's scales 1:100 1:10 1:5 1:2 1:1 2:1 "
+                     '5:1 50:1 100:1, not "3:1"'),
+    ("start_x_mm", "1300.00", "start_x_mm must be a place on the field, 0.00 to 1200.00 mm "
+                              '(two decimals at most), not "1300.00"'),
+    ("start_y_mm", "-5", "start_y_mm must be a place on the field"),
+])
+def test_a_job_sheet_off_the_machine_is_refused(em703_exe, example_jobs, tmp_path, key,
+                                                 value, words) -> None:
+    job = example_jobs[0]
+    for tape in job.parent.glob(f"{job.stem}-*.ptp"):
+        (tmp_path / tape.name).write_bytes(tape.read_bytes())
+    lines = job.read_text().splitlines()
+    number = next(k for k, l in enumerate(lines, 1) if l.startswith(key + " "))
+    bad = tmp_path / "bad.job"
+    bad.write_text("\n".join(f"{key} = {value}" if k == number else l
+                             for k, l in enumerate(lines, 1)) + "\n")
+    for sub in ("svg", "gcode", "gerber", "drill", "html"):
+        line = one_line(run(em703_exe, sub, bad, check=1))
+        assert line.startswith(f"{bad}: line {number}: {words}"), line
+
+
+def test_a_tape_too_long_to_draw_names_the_command(em703_exe, tmp_path) -> None:
+    """10 000 001 frames run (a cycle of 5 000 000 over two, and one more):
+    each writer names itself; sim and html take it."""
+    saw = encode([Frame(dx=1, cyc=5_000_000, k=10), Frame(dx=-1, k=20), Frame(k=20)])
+    job = write_job(tmp_path, "SAW", {"cond": saw}, {})
+    for sub in ("svg", "gcode", "gerber", "drill"):
+        line = one_line(run(em703_exe, sub, job, check=1))
+        assert line.endswith(": the tape runs 10000001 frames (cycles unrolled): more than the "
+                             f"10000000 that {sub} writes one by one (sim and html take any "
+                             "tape)"), line
+    tape = tmp_path / "SAW-cond.ptp"
+    line = one_line(run(em703_exe, "sim", tape, "--svg", tmp_path / "s.svg", check=1))
+    assert "that sim --svg writes one by one" in line
+    assert not (tmp_path / "s.svg").exists()

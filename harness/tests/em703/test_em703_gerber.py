@@ -218,3 +218,27 @@ def test_gerber_form_and_apertures(em703_exe, example_jobs, tmp_path) -> None:
         out = tmp_path / "again.gbr"
         run(em703_exe, "gerber", job, "-o", out, check=0)
         assert out.read_text() == first
+
+
+@pytest.mark.parametrize("dx, status", [(99_999_999, 0), (100_000_000, 1)])
+def test_the_gerber_format_holds_up_to_its_last_digit(em703_exe, tmp_path, dx, status) -> None:
+    """Format 6.6 holds 999 999.999999 mm: a line to 999 999.99 mm is
+    written, one to 1 000 000.00 mm is refused, naming how far it reaches."""
+    job = write_job(tmp_path, "FAR", {"cond": encode([Frame(dx=dx, k=10), Frame(dx=-dx, k=20)])},
+                    {})
+    proc = run(em703_exe, "gerber", job, check=status)
+    if status == 0:
+        assert "X999999990000Y0D01*" in proc.stdout.decode()
+    else:
+        assert proc.stderr.decode() == (
+            f"{tmp_path / 'FAR-cond.ptp'}: the drawing reaches 1000000.00 mm from the start "
+            "point, beyond the 999999.999999 mm that the Gerber 6.6 format holds\n")
+
+
+def test_a_job_sheet_without_a_code_line_is_headed_with_the_tapes_code(em703_exe, tmp_path):
+    job = write_job(tmp_path, "NOCODE", {"cond": encode([Frame(dx=300, k=10),
+                                                         Frame(dx=-300, k=20)], "K")}, {})
+    job.write_text("".join(l for l in job.read_text().splitlines(True)
+                           if not l.startswith("code")))
+    first = run(em703_exe, "gerber", job, check=0).stdout.decode().splitlines()[0]
+    assert first == "G04 EM-703 job NOCODE, code K*"

@@ -239,3 +239,22 @@ def test_an_arc_too_large_for_i_and_j_is_chords_and_says_so(em703_exe, tmp_path)
     assert asked.splitlines()[3] == "(arcs as chords within 0.5000 mm)"
     z = _em(em703_exe, "gcode", "--dialect", "iso-1970s", "--z", tmp_path / "c99999.ptp")
     assert z.returncode == 2 and b"--z is for linuxcnc and grbl" in z.stderr
+
+
+def test_a_file_without_a_program_is_a_fault(em703_exe, tmp_path) -> None:
+    for name, text in (("empty.iso", ""), ("blank.iso", "\n\n"), ("remark.iso", "(a remark)\n")):
+        path = tmp_path / name
+        path.write_text(text)
+        proc = _em(em703_exe, "check", path)
+        assert proc.returncode == 1 and proc.stdout == b""
+        assert proc.stderr.decode() == (f'{path}: no program in it: a program is a line "%", '
+                                        'its numbered blocks (N001 ...), and "%"\n')
+
+
+def test_a_block_number_of_four_digits_is_quoted(em703_exe, tmp_path) -> None:
+    path = tmp_path / "n4.iso"
+    path.write_text("%\nN0001 G17\nN002 M02\n%\n")
+    proc = _em(em703_exe, "check", path)
+    assert proc.returncode == 1
+    assert proc.stderr.decode() == (f'{path}: line 2: the block number has three digits, not '
+                                    '"N0001" (a blank after them)\n')

@@ -221,3 +221,14 @@ def test_a_character_outside_the_code_names_its_line_and_column(em703_exe, tmp_p
     err = proc.stderr.decode()
     assert err.startswith(f"{src}: line {line}, column {column}: ") and err.count("\n") == 1, err
     assert not (tmp_path / f"p.{code}.ptp").exists()
+
+
+@pytest.mark.parametrize("code, chars", [
+    ("iso", "ASCII letters, digits, signs, tab, newline"),
+    ("eia", "letters, digits, space - + . , / ( ) %, tab, newline")])
+def test_a_control_byte_names_the_characters_of_its_code(em703_exe, tmp_path, code, chars):
+    src = tmp_path / "soh.txt"
+    src.write_bytes(b"ab\001c\n")
+    proc = run(em703_exe, "punch", "--code", code, src, check=1)
+    assert proc.stderr.decode() == (f"{src}: line 1, column 3: byte 001 (octal) is not a "
+                                    f"character of the {code.upper()} code ({chars})\n")
