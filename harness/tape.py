@@ -313,8 +313,10 @@ class _Reader:
         n, value = self.i + 1, self.data[self.i]
         self.i += 1
         if value > 0o37:
+            text = ("; the file begins as text, not as a tape image"
+                    if n == 1 and 32 <= value <= 126 else "")
             raise TapeError(n, f"byte {value:03o} (octal) has bits above the low 5 "
-                               "set (not a 5-track row: a row is 00 to 37)")
+                               f"set (not a 5-track row: a row is 00 to 37){text}")
         return n, value
 
     def classify(self, n: int, value: int) -> _Row:

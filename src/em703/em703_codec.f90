@@ -349,8 +349,10 @@ contains
         value = iachar(data(n:n))
         if (value > 31 .or. value < 0) then
             call new_error(err, 'byte ' // octal3(value) // &
-                ' (octal) has bits above the low 5 set (not a 5-track row: a row is 00 to 37)', &
-                AT_ROW, n)
+                ' (octal) has bits above the low 5 set (not a 5-track row: a row is 00 to 37)' // &
+                trim(merge('; the file begins as text, not as a tape image', &
+                           '                                              ', &
+                           n == 1 .and. value >= 32 .and. value <= 126)), AT_ROW, n)
         end if
     end subroutine raw
 

@@ -348,6 +348,12 @@ DECODE_ERRORS: list[tuple[str, bytes, str, int, str]] = [
             "is 00 to 37)"),
     ("high bits in leader", bytes([0x20, 0o37, 0o37]),
      "auto", 1, "byte 040 (octal) has bits above the low 5 set (not a 5-track row: a "
+               "row is 00 to 37); the file begins as text, not as a tape image"),
+    ("a text for a tape", b"name = DEMO\n",
+     "auto", 1, "byte 156 (octal) has bits above the low 5 set (not a 5-track row: a "
+               "row is 00 to 37); the file begins as text, not as a tape image"),
+    ("a byte of 8 tracks first", bytes([0o200, 0o37, 0o37]),
+     "auto", 1, "byte 200 (octal) has bits above the low 5 set (not a 5-track row: a "
                "row is 00 to 37)"),
     ("not a code", with_gm(0o20, 0o03, 0o15),
      "8", 6, "code 15 (octal) is not an EM-703 code"),
