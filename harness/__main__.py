@@ -51,7 +51,8 @@ def _run_decode(args: argparse.Namespace) -> int:
 def _add_decode(sub: argparse._SubParsersAction) -> None:
     p = sub.add_parser("decode", help="decode and check an EM-703 tape image",
                        description="Print the frame text of a .ptp tape image, "
-                                   "or the first error with its row number.")
+                                   "or the first error with its row number. Exit "
+                                   "status: 0 decoded, 1 a tape error, 2 usage or I/O.")
     p.add_argument("tape", metavar="TAPE.ptp", help="tape image, one byte per row")
     p.add_argument("--code", choices=("8", "K", "auto"), default="auto",
                    help="code variant: 8 plain, K with control, auto (default)")
@@ -67,8 +68,8 @@ def _run_f77check(args: argparse.Namespace) -> int:
 def _add_f77check(sub: argparse._SubParsersAction) -> None:
     p = sub.add_parser("f77check", help="check the FORTRAN 77 sources (legacy/README.md)",
                        description="Check every *.f file under DIR against the FORTRAN 77 "
-                                   "rules of legacy/README.md, and every COMMON copy "
-                                   "against DIR/COMMON.inc.")
+                                   "rules of legacy/README.md, and, when DIR/COMMON.inc "
+                                   "exists, every COMMON copy against it.")
     p.add_argument("dir", nargs="?", default="legacy", metavar="DIR",
                    help="directory to check (default: legacy)")
     p.add_argument("--write-common", action="store_true",

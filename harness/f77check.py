@@ -956,8 +956,17 @@ def _first_sentence(text: str) -> str:
 def read_routine(path: Path, units: set[str]) -> Routine:
     """The header, the calls (CALL, a function reference, a routine passed as
     an argument) and the COMMON copies of one file of legacy/."""
-    lines = path.read_text(encoding="ascii").splitlines()
-    title = next(m for m in map(_TITLE.match, lines[:3]) if m)
+    data = path.read_bytes()
+    try:
+        lines = data.decode("ascii").splitlines()
+    except UnicodeDecodeError as exc:
+        line = data[:exc.start].count(b"\n") + 1
+        raise ValueError(f"{path}: line {line}: byte {data[exc.start]:03o} (octal) is not "
+                         "ASCII, as a FORTRAN 77 source is") from None
+    title = next((m for m in map(_TITLE.match, lines[:3]) if m), None)
+    if title is None:
+        raise ValueError(f"{path}: line 1: no title comment in lines 1-3 (the index "
+                         "wants 'C     NAME - what it does')")
     purpose, program = title.group(2).strip(), ""
     tag = _TAG.search(purpose)
     if tag:
@@ -974,7 +983,10 @@ def read_routine(path: Path, units: set[str]) -> Routine:
                 break
             para.append(ln.strip()[1:].strip())
     source = _first_sentence(" ".join(para))
-    unit = next(m for m in map(_UNIT_LINE.match, lines) if m)
+    unit = next((m for m in map(_UNIT_LINE.match, lines) if m), None)
+    if unit is None:
+        raise ValueError(f"{path}: no PROGRAM, SUBROUTINE or FUNCTION statement (every "
+                         "file of the index holds one routine)")
     calls: list[str] = []
     for line in lines:
         if line[:1] in "Cc*" or _UNIT_LINE.match(line):
@@ -1040,11 +1052,17 @@ def index_problems(root: Path) -> list[str]:
     readme = root / "README.md"
     if not readme.is_file():
         return [f"{readme}: missing"]
-    text = readme.read_text(encoding="utf-8")
+    try:
+        text = readme.read_text(encoding="utf-8")
+    except UnicodeDecodeError as exc:
+        return [f"{readme}: not UTF-8 text ({exc.reason} at byte {exc.start})"]
     if INDEX_BEGIN not in text or INDEX_END not in text:
         return [f"{readme}: no generated index between its markers"]
     have = text[text.index(INDEX_BEGIN):text.index(INDEX_END) + len(INDEX_END)] + "\n"
-    want = legacy_index(root)
+    try:
+        want = legacy_index(root)
+    except ValueError as exc:
+        return [f"the index cannot be made: {exc}"]
     if have != want:
         a, b = have.splitlines(), want.splitlines()
         k = next((i for i, (p, q) in enumerate(zip(a, b)) if p != q), min(len(a), len(b)))
@@ -1126,7 +1144,8 @@ def main(directory: str = "legacy", write_common: bool = False, index: bool = Fa
     with ``index``, first rewrite the index of DIR/README.md."""
     root = Path(directory)
     if not root.is_dir():
-        print(f"f77check: {directory}: not a directory", file=sys.stderr)
+        print(f"f77check: {directory}: "
+              + ("not a directory" if root.exists() else "no such directory"), file=sys.stderr)
         return 2
     files = find_sources(root)
     if not files:

@@ -66,6 +66,10 @@ from .tape import (DIGITS_8, DIGITS_K, Frame, Tape, TapeError, decode, frame_row
 
 #: The machine's accuracy, in units (0.01 mm): the coverage tolerance.
 TOLERANCE = 5
+#: The widest tolerance the command takes, units: half the widest tool.
+#: A wider one would let a tape leave out whole pads, and its check needs
+#: a raster as coarse as itself.
+MAX_TOLERANCE = 1000
 #: Most reasons about shapes, and most about stray frames, listed per tape
 #: (then a count of the others).
 MAX_REASONS = 15
@@ -832,10 +836,22 @@ def package_files_agree(tapedir: Path, file_name: str) -> None:
     if not sheet.is_file():
         return
     try:
-        keys = dict(line.split(" = ", 1) for line in sheet.read_text("latin-1").splitlines()
-                    if " = " in line and not line.startswith("#"))
+        data = sheet.read_bytes()
     except OSError as exc:
         raise VerifyError(f"{sheet}: {exc.strerror or exc}") from None
+    keys: dict[str, str] = {}
+    for n, raw in enumerate(data.split(b"\n"), 1):
+        line = raw[:-1] if raw.endswith(b"\r") else raw
+        if not line.strip() or line.startswith(b"#"):
+            continue
+        if not line.isascii() or b" = " not in line:
+            shown = line[:40].decode("ascii", "backslashreplace")
+            raise VerifyError(
+                f"{sheet}: line {n}: not a 'key = value' line of a job sheet (\"{shown}"
+                f"{'...' if len(line) > 40 else ''}\"): the tapes are checked against the job "
+                "sheet beside them; remove or rename it to verify the tapes alone")
+        key, value = line.decode("ascii").split(" = ", 1)
+        keys[key.strip()] = value.strip()
     for file_key, size_key, sha_key in RECORDED:
         if file_key not in keys or (size_key not in keys and sha_key not in keys):
             continue
@@ -864,7 +880,8 @@ def verify(deck_text: str, tapedir: str | Path, tol: int = TOLERANCE,
     or a file cannot be read."""
     tapedir = Path(tapedir)
     if not tapedir.is_dir():
-        raise VerifyError(f"{tapedir}: not a directory")
+        raise VerifyError(f"{tapedir}: " + ("not a directory: give the folder the tapes are in"
+                                            if tapedir.exists() else "no such directory"))
     try:
         packages = parse_deck(deck_text)
     except CardError as exc:
@@ -896,9 +913,9 @@ def main(deck: str, tapedir: str, tol_mm: str = "0.05", code: str = "auto") -> i
     except (ValueError, ZeroDivisionError):
         print(f"verify: --tolerance {tol_mm!r} is not a number of mm", file=sys.stderr)
         return 2
-    if tol.denominator != 1 or tol < 2:
-        print(f"verify: --tolerance must be whole 0.01 mm, at least 0.02 mm, not {tol_mm}",
-              file=sys.stderr)
+    if tol.denominator != 1 or tol < 2 or tol > MAX_TOLERANCE:
+        print(f"verify: --tolerance must be whole 0.01 mm, 0.02 to {MAX_TOLERANCE // 100}.00 "
+              f"mm, not {tol_mm}", file=sys.stderr)
         return 2
     try:
         text = Path(deck).read_bytes()

@@ -535,6 +535,30 @@ def test_a_readme_whose_index_is_stale_fails_the_check(tmp_path: Path, capsys) -
     assert "| [CMONE](cmone.f) |" in (tmp_path / "README.md").read_text()
 
 
+@pytest.mark.parametrize("text, says", [
+    (b"      PROGRAM X\n      END\n", "line 1: no title comment in lines 1-3"),
+    (b"", "line 1: no title comment in lines 1-3"),
+    (b"C     ZZ - a routine\n      I = 1\n", "no PROGRAM, SUBROUTINE or FUNCTION statement"),
+    (b"C     ZZ - caf\xc3\xa9\n      PROGRAM X\n      END\n",
+     "line 1: byte 303 (octal) is not ASCII"),
+])
+def test_a_file_the_index_cannot_read_is_named(tmp_path: Path, capsys, text, says) -> None:
+    """The index is made from each file's title comment and its routine:
+    a file without them is a violation naming it, never a traceback."""
+    write(tmp_path, "cmone.f", subroutine("CMONE", ["      I = 1"]))
+    (tmp_path / "README.md").write_text(
+        "# test\n\n<!-- index: written by `python -m harness f77check --index`; "
+        "do not edit -->\nstale\n<!-- end of index -->\n", encoding="utf-8")
+    (tmp_path / "zz.f").write_bytes(text)
+    assert main(["f77check", str(tmp_path)]) == 1
+    out = capsys.readouterr()
+    assert f"F77-INDEX: the index cannot be made: {tmp_path / 'zz.f'}: {says}" in out.out
+    assert "Traceback" not in out.err
+    assert main(["f77check", "--index", str(tmp_path)]) == 2
+    err = capsys.readouterr().err
+    assert f"cannot write the index: {tmp_path / 'zz.f'}: {says}" in err, err
+
+
 @pytest.mark.parametrize("expr", ["MODULO(I, 2)", "IAND(I, 3)", "IACHAR(S(1:1))", "SIZE(J)",
                                   "HUGE(I)", "INT(FLOOR(1.5))"])
 def test_fortran_90_intrinsics_are_caught(tmp_path: Path, expr: str) -> None:
@@ -552,3 +576,11 @@ def test_an_array_constructor_is_fortran_90(tmp_path: Path) -> None:
     write(tmp_path, "cmone.f", subroutine("CMONE", ["      INTEGER K(2)", "      K = (/ 1, 2 /)"]))
     found = only(tmp_path, "F77-F90")
     assert "array constructor" in found[0].message
+
+
+def test_a_directory_that_is_not_there_is_named_so(tmp_path: Path, capsys) -> None:
+    assert main(["f77check", str(tmp_path / "gone")]) == 2
+    assert capsys.readouterr().err == f"f77check: {tmp_path / 'gone'}: no such directory\n"
+    (tmp_path / "file.f").write_text("")
+    assert main(["f77check", str(tmp_path / "file.f")]) == 2
+    assert capsys.readouterr().err == f"f77check: {tmp_path / 'file.f'}: not a directory\n"

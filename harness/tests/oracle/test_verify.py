@@ -307,6 +307,25 @@ def test_a_file_that_is_not_the_job_sheets_is_refused(board, tmp_path, name) -> 
     assert main(["verify", str(deck), str(out)]) == 2
 
 
+@pytest.mark.parametrize("text, line, shown", [
+    (bytes(range(200, 250)), 1, '"\\xc8\\xc9'),
+    (b"# a job sheet\nname = BOARD\nscale: 1:1\n", 3, '"scale: 1:1")'),
+])
+def test_a_job_sheet_that_cannot_be_read_is_refused(board, tmp_path, text, line,
+                                                    shown) -> None:
+    """A NAME.job beside the tapes that is no job sheet is not passed over:
+    its files could not be checked against it."""
+    out = tmp_path / "tapes"
+    shutil.copytree(board, out)
+    (out / "BOARD.job").write_bytes(text)
+    with pytest.raises(verify.VerifyError) as info:
+        verify.verify(BOARD, out)
+    message = str(info.value)
+    assert message.startswith(f"{out / 'BOARD.job'}: line {line}: not a 'key = value' line of "
+                              f"a job sheet ({shown}"), message
+    assert message.endswith("remove or rename it to verify the tapes alone")
+
+
 def test_messages_say_what_and_where(board, tmp_path) -> None:
     cases = {
         "small": (drop_pad, "card 3 (D): round 1.60 mm pad at (10.00, 10.00) mm: missing, "
@@ -440,7 +459,8 @@ def test_command_exit_status_and_deterministic_output(board, tmp_path, capsys) -
 
 @pytest.mark.parametrize("args,fragment", [
     (["verify", "/nonexistent.crd", "."], "/nonexistent.crd: No such file"),
-    (["verify", "{deck}", "/nonexistent"], "/nonexistent: not a directory"),
+    (["verify", "{deck}", "/nonexistent"], "/nonexistent: no such directory"),
+    (["verify", "{deck}", "{deck}"], "deck.crd: not a directory: give the folder the tapes are in"),
     (["verify", "{bad}", "."], "bad.crd: card 2: unknown card type 'Q' in column 1 (the harness "
                                "cannot read this deck, so there is nothing to verify against)"),
     (["verify", "{noend}", "."], "noend.crd: at the end of the deck: the deck ends without the "
@@ -449,6 +469,8 @@ def test_command_exit_status_and_deterministic_output(board, tmp_path, capsys) -
     (["verify", "{deck}", ".", "--tol", "0.05"], "python -m harness verify: error: unrecognized arguments: "
                                                    "--tol 0.05"),
     (["verify", "{deck}", ".", "--tolerance", "0.001"], "--tolerance must be whole 0.01 mm"),
+    (["verify", "{deck}", ".", "--tolerance", "1e9"], "--tolerance must be whole 0.01 mm, 0.02 "
+                                                     "to 10.00 mm, not 1e9"),
     (["verify", "{deck}"], "usage:"),
 ])
 def test_command_usage_and_io_errors_exit_2(tmp_path, capsys, args, fragment) -> None:
