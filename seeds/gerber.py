@@ -113,6 +113,21 @@ def read_gerber(path: str | Path):
     return g
 
 
+#: the end of a Gerber file, M02 (or the deprecated M00), as a command of its own
+END_OF_FILE = re.compile(r"(?:^|[*%])\s*M0*[02]\*")
+
+
+def ends_without_m02(path: str | Path) -> bool:
+    """Whether a Gerber file lacks its end-of-file command (M02): gerbonara
+    reads what there is without a word, and a file cut short in a copy or a
+    download then loses its last objects silently."""
+    try:
+        text = Path(path).read_bytes().decode("latin-1")
+    except OSError:
+        return False                   # read_gerber has said so already
+    return END_OF_FILE.search(text) is None
+
+
 @dataclass
 class Hole:
     x: float          # mm, the board's coordinates
@@ -128,16 +143,43 @@ DROPPED_HITS = {
 }
 
 
-def read_drill(path: str | Path) -> tuple[list[Hole], int]:
-    """The holes of an Excellon file in file order, and how many slots
-    (routed holes) it has, which are left out."""
+#: an Excellon canned slot, ``XaYbG85XcYd`` (KiCad writes its oval holes so):
+#: gerbonara knows no G85 and refuses the whole file at that line.
+G85_SLOT = re.compile(r"^[^;(]*G85")
+
+
+def _excellon_open(path: str | Path, text: str):
+    """gerbonara's ExcellonFile.open (which also reads the format files some
+    CAD tools write beside a drill file) on ``text`` instead of the file's
+    own text."""
     from gerbonara import ExcellonFile
+
+    class Given(ExcellonFile):
+        @classmethod
+        def from_string(kls, data, **kwargs):
+            return ExcellonFile.from_string(text, **kwargs)
+    return Given.open(path)
+
+
+def read_drill(path: str | Path) -> tuple[list[Hole], int, list[int]]:
+    """The holes of an Excellon file in file order, how many slots routed
+    with M15/M16 it has, and the numbers of its lines that are G85 slots;
+    the slots are left out.  A G85 line is blanked before gerbonara reads
+    the file, so that its line numbers stay the file's (the next hit is read
+    from its own coordinates: a hit that leaves one out takes it from the
+    hit before the slot, as KiCad, which writes both, never needs)."""
     from gerbonara.graphic_objects import Flash
     from gerbonara.utils import MM
     try:
+        text = Path(path).read_text(encoding="latin-1")
+        lines = text.splitlines()
+        g85 = [k for k, line in enumerate(lines, start=1) if G85_SLOT.match(line.strip())]
+        if g85:
+            text = "\n".join("" if k in set(g85) else line
+                             for k, line in enumerate(lines, start=1)) + "\n"
         with warnings.catch_warnings(record=True) as said:
             warnings.simplefilter("always")
-            x = ExcellonFile.open(path)
+            x = _excellon_open(path, text)
     except OSError as exc:
         raise Unreadable(f"{path}: {exc.strerror or exc}") from None
     except Exception as exc:
@@ -164,9 +206,9 @@ def read_drill(path: str | Path) -> tuple[list[Hole], int]:
             holes.append(Hole(float(o.x), float(o.y), float(dia)))
         else:
             slots += 1
-    if not holes:
+    if not holes and not slots and not g85:
         raise Unreadable(f"{path}: no drill hits in it (is it an Excellon drill file?)")
-    return holes, slots
+    return holes, slots, g85
 
 
 # ---------------------------------------------------------------------------
@@ -821,7 +863,7 @@ def _run(args: argparse.Namespace) -> int:
         return 2
     try:
         g = read_gerber(args.copper)
-        holes, slots = read_drill(args.drill) if args.drill else ([], 0)
+        holes, slots, g85 = read_drill(args.drill) if args.drill else ([], 0, [])
         conv = convert(g, holes, tools)
     except Unreadable as exc:
         print(f"gerber2deck: {exc}", file=sys.stderr)
@@ -835,6 +877,9 @@ def _run(args: argparse.Namespace) -> int:
               f"{start[0]:g}, {start[1]:g} mm it does not fit the {FIELD_MM:g} x {FIELD_MM:g} mm "
               f"field of the coordinatograph; no deck written", file=sys.stderr)
         return 1
+    if ends_without_m02(args.copper):
+        print(f"gerber2deck: {args.copper}: the file ends without M02 (end of file): it may be "
+              f"cut short, and its last objects missing from the deck", file=sys.stderr)
     for line in conv.notes:
         print(f"gerber2deck: {args.copper}: {line}", file=sys.stderr)
     if args.drill:
@@ -846,9 +891,16 @@ def _run(args: argparse.Namespace) -> int:
         if slots:
             print(f"gerber2deck: {args.drill}: {slots} slots (routed holes) left out",
                   file=sys.stderr)
-        print(f"gerber2deck: {args.drill}: {len(holes)} holes -> package {name}-DRILL "
-              f"(tool {drill_tool(holes) / 100:.2f} mm)",
-              file=sys.stderr)
+        for k in g85:
+            print(f"gerber2deck: {args.drill}:{k}: a slot (G85, a routed hole) left out",
+                  file=sys.stderr)
+        if holes:
+            print(f"gerber2deck: {args.drill}: {len(holes)} holes -> package {name}-DRILL "
+                  f"(tool {drill_tool(holes) / 100:.2f} mm)",
+                  file=sys.stderr)
+        else:
+            print(f"gerber2deck: {args.drill}: no round holes, only slots: no package "
+                  f"{name}-DRILL", file=sys.stderr)
     w1, w2, w3 = conv.tools
     print(f"gerber2deck: {args.copper}: {w:.2f} x {h:.2f} mm, start point at board "
           f"{conv.origin[0]:.2f}, {conv.origin[1]:.2f} mm; tools W1 {w1 / 100:.2f}, "

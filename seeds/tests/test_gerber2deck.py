@@ -203,3 +203,41 @@ def test_a_package_is_never_named_a_bare_c_or_e(tmp_path, run_tenzor):
     tapes, out = run_tenzor(tmp_path / "e.crd")
     assert tapes.returncode == 0, tapes.stderr.decode()
     assert (out / "E_-cond.ptp").exists()
+
+
+def test_g85_slots_are_left_out_and_named_by_their_line(tmp_path):
+    # KiCad writes an oval hole as a G85 slot; gerbonara refused the whole
+    # file at that line ("Unknown excellon statement"), exit 2
+    (tmp_path / "c.gbr").write_text(BOARD)
+    (tmp_path / "d.drl").write_text("M48\nMETRIC\nT1C0.8\n%\nT1\nX10.0Y10.0\n"
+                                    "X5.0Y0.0G85X8.0Y0.0\nX35.4Y10.0\nM30\n")
+    proc = g2d(tmp_path / "c.gbr", "--drill", tmp_path / "d.drl", "-o", tmp_path / "c.crd")
+    assert proc.returncode == 0, proc.stderr
+    assert "d.drl:7: a slot (G85, a routed hole) left out" in proc.stderr
+    assert "d.drl: 2 holes -> package C_-DRILL" in proc.stderr, proc.stderr
+    drill = (tmp_path / "c.crd").read_text().split("C_-DRILL", 1)[1]
+    assert sum(c.startswith("D") for c in drill.splitlines()) == 2, drill
+
+
+def test_a_drill_file_of_slots_only_gives_no_drill_package(tmp_path):
+    (tmp_path / "c.gbr").write_text(BOARD)
+    (tmp_path / "d.drl").write_text("M48\nMETRIC\nT1C0.8\n%\nT1\nX5.0Y0.0G85X8.0Y0.0\nM30\n")
+    proc = g2d(tmp_path / "c.gbr", "--drill", tmp_path / "d.drl", "-o", tmp_path / "c.crd")
+    assert proc.returncode == 0, proc.stderr
+    assert "d.drl:6: a slot (G85, a routed hole) left out" in proc.stderr
+    assert "no round holes, only slots: no package C_-DRILL" in proc.stderr
+    assert "-DRILL" not in (tmp_path / "c.crd").read_text()
+
+
+def test_a_gerber_file_cut_short_is_said(tmp_path):
+    # a file without its M02 was converted as far as it went, without a word
+    gbr = tmp_path / "cut.gbr"
+    gbr.write_text(BOARD[:BOARD.index("G36*")])
+    proc = g2d(gbr, "-o", tmp_path / "cut.crd")
+    assert proc.returncode == 0, proc.stderr
+    assert "cut.gbr: the file ends without M02 (end of file): it may be cut short" \
+        in proc.stderr
+    whole = tmp_path / "whole.gbr"
+    whole.write_text(BOARD)
+    proc = g2d(whole, "-o", tmp_path / "whole.crd")
+    assert proc.returncode == 0 and "M02" not in proc.stderr, proc.stderr
