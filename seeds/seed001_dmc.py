@@ -362,15 +362,13 @@ def program(pl: Plan, mode: str, cpm: float = COUNTS_PER_MM, tol: float = seed00
     out += pl.first_body
     pos: tuple[float, float] = (0.0, 0.0)
     if mode == "intermittent":
-        for k, run in enumerate(runs):
+        for run in runs:
             out.append(_comment(run.title))
             if pos != run.start:
                 out += [f"PA {run.start[0]},{run.start[1]}", "BG XY", "AM XY"]
             out += run.before + [f"SB {tool}"] + run.writing + ["VM XY"]
             out += [_move_line(m, run.start) for m in run.moves]
-            out += ["VE", "BGS", "AMS", f"CB {tool}"] + run.after
-            if k < len(runs) - 1:
-                out += run.stop
+            out += ["VE", "BGS", "AMS", f"CB {tool}"] + run.after + run.stop
             pos = run.moves[-1].to
     else:
         for run in runs:

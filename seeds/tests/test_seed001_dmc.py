@@ -251,6 +251,21 @@ def test_macros_land_on_their_nearest_segment(tmp_path, capsys):
     assert len(on) == len(ORDER)
 
 
+def test_a_stop_macro_on_the_last_segment_runs_after_its_end(tmp_path, capsys):
+    # the STOP of the last segment was dropped without a word
+    doc = ezdxf.new("R2000")
+    msp = doc.modelspace()
+    msp.add_line((0, 0), (10, 0))
+    msp.add_line((0, 20), (10, 20))
+    for text, at in [("1", (5, 1)), ("2", (5, 21)), ("END OUT 2", (9, 21)),
+                     ("STOP WAIT 50", (1, 21))]:
+        msp.add_text(text, dxfattribs={"insert": at, "layer": "NOTES"})
+    status, text, _ = _convert(tmp_path, doc, "--mode", "intermittent")
+    assert status == 0, capsys.readouterr().err
+    ev = Trace(text).events
+    assert ev[-3:] == [("tool", False), ("out", 2, True), ("wait", 50)], ev
+
+
 def test_the_drawings_mode_text_and_the_command_line(tmp_path, capsys):
     doc, _ = _drawing()
     doc.modelspace().add_text("MODE INTERMITTENT", dxfattribs={"insert": (90, 90)})
