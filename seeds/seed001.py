@@ -88,13 +88,17 @@ class TooBig(ValueError):
 
 def _check_points(pts: Iterable[Sequence[float]], origin: Point) -> None:
     for p in pts:
-        for v, o in zip((p[0], p[1]), origin):
+        for axis, v, o in zip("xy", (p[0], p[1]), origin):
             v = float(v)
             if not math.isfinite(v):
                 raise _LeftOut(f"a coordinate is {v}, not a number")
             if abs(v - o) > FIELD_MM:
-                raise _LeftOut(f"coordinate {v:.6g} mm is off the {FIELD_MM:.0f} mm field "
-                               f"around the origin")
+                if not o:
+                    raise _LeftOut(f"coordinate {v:.6g} mm is off the {FIELD_MM:.0f} mm "
+                                   f"field around the origin")
+                raise _LeftOut(f"{axis} coordinate {v:.6g} mm is {v - o:.6g} mm from the "
+                               f"origin's {axis} ({o:g} mm, --origin): off the "
+                               f"{FIELD_MM:.0f} mm field around the origin")
 
 
 def _check_size(v: float, what: str) -> float:
@@ -140,6 +144,12 @@ class Label:
     handle: str
     layer: str
     at: Point
+    kind: str = "TEXT"          # or MTEXT
+
+    @property
+    def where(self) -> str:
+        """Its type, handle and layer, for a problem line."""
+        return f"{self.kind} #{self.handle} on layer {self.layer}"
 
 
 @dataclass
@@ -296,7 +306,7 @@ def _entity_items_of(e: Any, origin: Point, problems: list[str], labels: list[La
         ins = e.dxf.insert
         _check_points([ins], origin)
         labels.append(Label(" ".join(text.split()), e.dxf.handle, layer,
-                            (float(ins[0]) - origin[0], float(ins[1]) - origin[1])))
+                            (float(ins[0]) - origin[0], float(ins[1]) - origin[1]), kind))
         return []
     if kind in ("CIRCLE", "ARC", "LWPOLYLINE") and not _flat(e):
         problems.append(f"{_where(e)}: drawn in a tilted plane; left out")
@@ -461,10 +471,11 @@ def _order(items: list[Item], labels: list[Label], problems: list[str]) -> tuple
     first: list[int] = []
     last: list[int] = []
     numbered: dict[int, int] = {}
+    last_where = "LAST"
     nearest = _Nearest(items)
     for lab in labels:
         words = lab.text.split()
-        where = f"TEXT #{lab.handle} on layer {lab.layer}"
+        where = lab.where
         if not words:
             continue
         key = words[0].upper()
@@ -475,11 +486,16 @@ def _order(items: list[Item], labels: list[Label], problems: list[str]) -> tuple
             if not items:
                 problems.append(f"{where}: label {words[0]} has no item to attach to")
                 continue
+            if key in ("FIRST", "LAST") and (first if key == "FIRST" else last):
+                problems.append(f"{where}: {key} given again; the first in the drawing is "
+                                f"used, this one ignored")
+                continue
             near = nearest(lab.at)
             if key == "FIRST":
                 first.append(near)
             elif key == "LAST":
                 last.append(near)
+                last_where = where
             else:
                 n = int(words[0])
                 if n in numbered:
@@ -489,29 +505,28 @@ def _order(items: list[Item], labels: list[Label], problems: list[str]) -> tuple
         else:
             problems.append(f"{where}: text {lab.text!r} is not a label (FIRST, LAST, "
                             f"1, 2, ...); left out")
-    seq = sequence(len(items), first, numbered, last, problems)
+    seq = sequence(len(items), first, numbered, last, problems, last_where)
     if seq is None:
         return items, False
     return [items[i] for i in seq], True
 
 
 def sequence(n: int, first: list[int], numbered: dict[int, int], last: list[int],
-             problems: list[str]) -> list[int] | None:
+             problems: list[str], last_where: str = "LAST") -> list[int] | None:
     """The drawing order of n items (indices) from the items FIRST, the
     numbers and LAST are attached to (section 4 of the paper): FIRST, the
     numbers in order (an item may carry several), the unlabelled items in
-    drawing order, LAST.  None when there is no label at all."""
-    for name, got in (("FIRST", first), ("LAST", last)):
-        if len(got) > 1:
-            problems.append(f"{name} given {len(got)} times; the first one is used")
-            del got[1:]
+    drawing order, LAST.  None when there is no label at all.  The callers
+    take one FIRST and one LAST, and report any other by its text;
+    ``last_where`` names the LAST text for a problem line."""
     if not (first or last or numbered):
         return None
     seq = first + [numbered[k] for k in sorted(numbered)]
     seen = set(seq) | set(last)
     seq += [i for i in range(n) if i not in seen] + last
     if last and last[0] in first + list(numbered.values()):
-        problems.append("LAST is attached to an item that also has an earlier label")
+        problems.append(f"{last_where}: LAST is attached to an item that also has an "
+                        f"earlier label")
     return seq
 
 

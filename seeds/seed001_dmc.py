@@ -123,7 +123,7 @@ def macro_body(words: Sequence[str]) -> list[str]:
 
 
 def _where(lab: Label) -> str:
-    return f"TEXT #{lab.handle} on layer {lab.layer}"
+    return lab.where
 
 
 def plan(reading: seed001.Reading) -> Plan:
@@ -138,6 +138,7 @@ def plan(reading: seed001.Reading) -> Plan:
     first_body: list[str] = []
     last_body: list[str] = []
     mode: str | None = None
+    last_where = "LAST"
     nearest = seed001._Nearest(items) if items else None
     for lab in reading.labels:
         words = lab.text.split()
@@ -173,15 +174,18 @@ def plan(reading: seed001.Reading) -> Plan:
         if nearest is None:
             problems.append(f"{where}: {words[0]} has no segment to attach to")
             continue
+        if head in ("FIRST", "LAST") and (first if head == "FIRST" else last):
+            problems.append(f"{where}: {head} given again; the first in the drawing is used, "
+                            f"this one ignored")
+            continue
         near = nearest(lab.at)
         if head == "FIRST":
             first.append(near)
-            if len(first) == 1:
-                first_body = body
+            first_body = body
         elif head == "LAST":
             last.append(near)
-            if len(last) == 1:
-                last_body = body
+            last_body = body
+            last_where = where
         elif is_label:
             n = int(words[0])
             if body:
@@ -197,7 +201,7 @@ def plan(reading: seed001.Reading) -> Plan:
                 problems.append(f"{where}: macro {head} has no commands; left out")
                 continue
             attached.append((head, near, body))
-    order = seed001.sequence(len(items), first, numbered, last, problems)
+    order = seed001.sequence(len(items), first, numbered, last, problems, last_where)
     if order is None:
         order = list(range(len(items)))
     per_item = [Macros() for _ in items]

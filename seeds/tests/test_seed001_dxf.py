@@ -9,7 +9,7 @@ from pathlib import Path
 import ezdxf
 import pytest
 
-from seeds import seed001
+from seeds import seed001, seed001_dmc
 from seeds.__main__ import main
 from harness.deck import parse_deck
 from harness.tests.helpers import check_package
@@ -86,6 +86,27 @@ def test_labels_order_the_items() -> None:
     assert conv.ordered and any("order number 1 given twice" in p for p in conv.problems)
     deck = seed001.deck_text(conv, "T")
     assert deck.splitlines()[4][70] == "D"               # deck order on the P card
+
+
+def test_a_second_first_or_last_is_named_like_every_report() -> None:
+    """A FIRST or LAST given again was "FIRST given 2 times; the first one is
+    used", naming no text: now the ignored one's type, handle and layer."""
+    doc, msp = _doc()
+    for k in range(3):
+        msp.add_line((0, 10 * k), (20, 10 * k))
+    msp.add_text("FIRST", dxfattribs={"insert": (5, 1)})
+    again = msp.add_mtext("FIRST", dxfattribs={"insert": (5, 11), "layer": "NOTES"})
+    last = msp.add_text("LAST", dxfattribs={"insert": (5, 1), "layer": "L"})
+    conv = seed001.convert(doc)
+    assert [it.segments[0].y0 for it in conv.items] == [0, 10, 20, 0]
+    assert (f"MTEXT #{again.dxf.handle} on layer NOTES: FIRST given again; the first in "
+            f"the drawing is used, this one ignored") in conv.problems, conv.problems
+    assert (f"TEXT #{last.dxf.handle} on layer L: LAST is attached to an item that also "
+            f"has an earlier label") in conv.problems, conv.problems
+    reading = seed001.read_drawing(doc)
+    plan = seed001_dmc.plan(reading)
+    assert any(p.startswith(f"MTEXT #{again.dxf.handle} on layer NOTES: FIRST given again")
+               for p in plan.problems), plan.problems
 
 
 def test_no_labels_leaves_the_order_to_tenzor() -> None:

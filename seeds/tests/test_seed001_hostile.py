@@ -51,6 +51,22 @@ def test_a_coordinate_off_the_field_or_not_a_number_is_left_out(tmp_path, capsys
     assert sum(1 for c in deck.splitlines() if c.startswith("D")) == 1
 
 
+def test_a_coordinate_off_the_field_around_origin_names_its_distance(tmp_path, capsys):
+    # with --origin 5000,0 a point at x = 0 was "coordinate 0 mm is off the
+    # 1200 mm field around the origin", which is not what is wrong with 0
+    doc, msp = _doc()
+    msp.add_circle((5010, 10), 1.0)
+    bad = msp.add_circle((0, 10), 1.0)
+    path = tmp_path / "board.dxf"
+    doc.saveas(path)
+    status = main(["dxf2deck", str(path), "--origin", "5000,0", "-o", str(tmp_path / "b.crd")])
+    err = capsys.readouterr().err
+    assert status == 1
+    assert (f"CIRCLE #{bad.dxf.handle} on layer 0: x coordinate 0 mm is -5000 mm from the "
+            f"origin's x (5000 mm, --origin): off the 1200 mm field around the origin; "
+            f"left out") in err, err
+
+
 @pytest.mark.parametrize("kind", ["radius", "width", "line", "text", "arc"])
 def test_every_kind_of_entity_is_checked(tmp_path, capsys, kind):
     doc, msp = _doc()
