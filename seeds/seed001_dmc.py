@@ -435,15 +435,22 @@ DXF2DMC_HELP = (
     "and layer (exit status 1; the program is still written).")
 
 
+def _number(v: float) -> str:
+    """A number as it was most likely given: a whole one without exponent."""
+    return str(int(v)) if float(v).is_integer() and abs(v) < 1e16 else f"{v:.15g}"
+
+
 def _run(args: argparse.Namespace) -> int:
     try:
         tol = seed001.check_tolerance(args.tolerance)
         cpm = float(args.counts_per_mm)
         if not (math.isfinite(cpm) and 1 <= cpm <= 1_000_000):
-            raise ValueError(f"--counts-per-mm {cpm:g} is not 1 to 1000000")
+            raise ValueError(f"--counts-per-mm {_number(cpm)} is not 1 to 1000000")
         if 2 / cpm > tol:
             raise ValueError(f"a count ({1 / cpm:g} mm) must be at most half the tolerance "
-                             f"({tol:g} mm)")
+                             f"({tol:g} mm): --counts-per-mm {_number(cpm)} with --tolerance "
+                             f"{tol:g} mm, where at least {_number(math.ceil(2 / tol - 1e-9))} counts "
+                             f"a mm would do")
         speed = float(args.speed)
         if not (math.isfinite(speed) and 0 < speed <= 10_000):
             raise ValueError(f"--speed {speed:g} mm/s is not above 0 and at most 10000")

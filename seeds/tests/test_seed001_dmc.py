@@ -371,3 +371,19 @@ def test_usage_errors(tmp_path, capsys):
     assert main(["dxf2dmc", str(tmp_path / "missing.dxf")]) == 2
     assert main(["dxf2dmc", "--help"]) == 0
     assert "Traceback" not in capsys.readouterr().err
+
+
+@pytest.mark.parametrize("args, words", [
+    # printed "1e+06 is not 1 to 1000000"
+    (["--counts-per-mm", "1000001"], "dxf2dmc: --counts-per-mm 1000001 is not 1 to 1000000"),
+    (["--counts-per-mm", "100"],
+     "a count (0.01 mm) must be at most half the tolerance (0.005 mm): --counts-per-mm 100 "
+     "with --tolerance 0.005 mm, where at least 400 counts a mm would do"),
+    (["--counts-per-mm", "1000", "--tolerance", "0.0001"], "at least 20000 counts a mm"),
+])
+def test_counts_per_mm_out_of_range_is_said_as_given(tmp_path, capsys, args, words):
+    doc, _ = _drawing()
+    src = tmp_path / "d.dxf"
+    doc.saveas(src)
+    assert main(["dxf2dmc", str(src), *args]) == 2
+    assert words in capsys.readouterr().err
