@@ -213,3 +213,32 @@ def test_dxf2deck_will_not_write_over_its_drawing(tmp_path: Path, capsys) -> Non
     assert "will not write over its own input" in capsys.readouterr().err
     assert drawing.read_bytes() == (EXAMPLES / "board.dxf").read_bytes()
     assert sorted(p.name for p in tmp_path.iterdir()) == ["board.dxf"]
+
+
+def test_the_reports_exit_status_is_as_the_page_says(tmp_path: Path, capsys) -> None:
+    """SEED001-DXF.md's reports: exit 1 for anything but a hint reported,
+    even when nothing is left out (a bow-tie on a PAD layer is drawn); a
+    varying width is left out; a drawing with nothing to draw gets no deck
+    and no program."""
+    page = " ".join((ROOT / "docs" / "SEED001-DXF.md").read_text().split())
+    assert "exit status is 1 if anything other than a hint was reported, whether left out " \
+           "or not" in page
+    assert "A polyline of varying width is reported and left out" in page
+    assert "unless nothing is left to draw (`nothing to draw`: exit 1, no deck)" in page
+    assert "nothing is left to draw: `nothing to draw`, exit 1, no program" in page
+    doc, msp = _doc()
+    msp.add_lwpolyline([(0, 0), (4, 2), (4, 0), (0, 2)], close=True, dxfattribs={"layer": "PAD"})
+    vary = msp.add_lwpolyline([(0, 10, 0.2, 0.5), (5, 10, 0.2, 0.5)], format="xyse")
+    doc.saveas(tmp_path / "b.dxf")
+    assert main(["dxf2deck", str(tmp_path / "b.dxf"), "-o", str(tmp_path / "b.crd")]) == 1
+    err = capsys.readouterr().err
+    assert "drawn as a conductor" in err
+    assert f"LWPOLYLINE #{vary.dxf.handle} on layer 0: varying width; left out" in err
+    assert (tmp_path / "b.crd").exists()
+    doc, msp = _doc()
+    msp.add_text("DRILL 0.8 MM", dxfattribs={"insert": (5, 1)})
+    doc.saveas(tmp_path / "t.dxf")
+    for command, out in (("dxf2deck", "t.crd"), ("dxf2dmc", "t.dmc")):
+        assert main([command, str(tmp_path / "t.dxf"), "-o", str(tmp_path / out)]) == 1
+        assert f"{command}: {tmp_path / 't.dxf'}: nothing to draw" in capsys.readouterr().err
+        assert not (tmp_path / out).exists()
