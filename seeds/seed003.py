@@ -991,7 +991,13 @@ def _run_cnclink(args: argparse.Namespace) -> int:
             except UnicodeDecodeError as exc:
                 raise ValueError(f"byte {exc.start + 1}: not ASCII text; POLYLINES is "
                                  f"'x y' lines, a .crd deck or a .bin program") from None
-            pls = deck_polylines(text) if args.input.endswith(".crd") else read_polylines(text)
+            deck = args.input.endswith(".crd")
+            pls = deck_polylines(text) if deck else read_polylines(text)
+            if not pls:
+                raise ValueError("nothing to draw: " + (
+                    "the deck has no conductors (L and + cards), the only cards cnclink "
+                    "draws" if deck else "no polyline of two points or more in it")
+                    + "; nothing sent")
             data = encode(program(pls, ratio=values["m"]))
     except OSError as exc:
         err(f"{args.input}: {exc.strerror or exc}")
@@ -1038,9 +1044,16 @@ def _run_cnclink(args: argparse.Namespace) -> int:
             err(f"{args.received}: {exc.strerror or exc}")
             return 2
     if not args.run:
-        drawn = machine.link.drawn or []
+        try:                       # a .bin is sent as it is: the CNC judges it at Пуск
+            drawn = execute(decode(data))
+        except ValueError as exc:
+            err(f"{args.input}: not a whole program: {exc}; the CNC holds it, but Пуск would "
+                f"stop with Сбой 2")
+            return 1
         print(f"program in the CNC's memory: it draws {len(drawn)} polylines in "
               f"{sum(len(p) - 1 for p in drawn)} moves")
+        if not drawn:
+            err(f"{args.input}: the program draws nothing (no move with the tool lowered)")
         return 0 if _write_svg(args, machine.link.program, []) else 2
     outcome = run(machine, args.stop_at, args.panel_stop)
     for line in outcome.lines:

@@ -269,3 +269,40 @@ def test_svg_and_view(tmp_path: Path) -> None:
                                  "    2  1001            z layer 1",
                                  "    3  2000 2710 0000  move +10000 +0"]
     assert s3.view(data)[-1] == "   17  FF00            конец УП (end)"
+
+
+def test_a_file_that_is_not_a_whole_program_or_draws_nothing_is_said(tmp_path: Path) -> None:
+    """Random bytes, a program cut short, an empty file and a deck of pads
+    only were all "sent" with exit 0 and "it draws 0 polylines"."""
+    from harness import cards
+    whole = s3.encode(s3.program(s3.read_polylines(TWO)))
+    cases = {
+        "noise.bin": (bytes((k * 151 + 7) % 256 for k in range(300)),
+                      "noise.bin: not a whole program: word 1: unknown command 0x9e07"),
+        "cut.bin": (whole[:-2], f"cut.bin: not a whole program: word {len(whole) // 2 - 1}: "
+                                f"the program has no end command"),
+        "empty.txt": (b"", "empty.txt: nothing to draw: no polyline of two points or more in "
+                           "it; nothing sent"),
+        "pads.crd": (cards.deck([cards.CardPackage("PADS", [cards.p_card(1000, 1000, 80, 80, 40),
+                                                            cards.d_card(100, 100, 160)])])
+                     .encode("ascii"),
+                     "pads.crd: nothing to draw: the deck has no conductors (L and + cards), "
+                     "the only cards cnclink draws; nothing sent"),
+    }
+    for name, (data, words) in cases.items():
+        (tmp_path / name).write_bytes(data)
+        proc = cnclink(str(tmp_path / name))
+        assert proc.returncode == 1, (name, proc.stdout, proc.stderr)
+        assert words in proc.stderr, (name, proc.stderr)
+        assert "draws 0 polylines" not in proc.stdout and "Traceback" not in proc.stderr
+        if name.endswith(".bin"):
+            assert "EOT: ACK" in proc.stdout            # sent as it is: the CNC judges it
+        else:
+            assert proc.stdout == ""                    # nothing sent
+    (tmp_path / "ok.bin").write_bytes(whole)
+    assert cnclink(str(tmp_path / "ok.bin")).returncode == 0
+    # a whole program that draws nothing is the CNC's to run (a z layer only)
+    (tmp_path / "z.bin").write_bytes(struct.pack("<3H", 0x1000, 0x1001, 0xFF00))
+    z = cnclink(str(tmp_path / "z.bin"))
+    assert z.returncode == 0 and "z.bin: the program draws nothing (no move with the tool " \
+        "lowered)" in z.stderr, z.stderr
