@@ -103,10 +103,24 @@ def test_a_block_that_inserts_itself_is_reported(tmp_path, capsys):
     assert sum(1 for c in deck.splitlines() if c.startswith("D")) == 1
 
 
-def test_nested_inserts_past_the_budget_are_refused(tmp_path, capsys, monkeypatch):
-    """2^24 circles in a few kilobytes; the budget stops the expansion, at
-    the budget the message names (the budget is read when a reading starts)."""
-    monkeypatch.setattr(seed001, "ENTITY_BUDGET", 5000)
+def _bomb(doc, msp, levels: int = 24) -> None:
+    """2^levels circles in a few kilobytes: each block inserts the one below twice."""
+    doc.blocks.new("B0").add_circle((0, 0), 0.5)
+    for k in range(1, levels + 1):
+        blk = doc.blocks.new(f"B{k}")
+        blk.add_blockref(f"B{k - 1}", (0, 0))
+        blk.add_blockref(f"B{k - 1}", (0.01 * k, 0))
+    msp.add_blockref(f"B{levels}", (10, 10))
+
+
+@pytest.mark.parametrize("budget", [5000, None])
+def test_nested_inserts_past_the_budget_are_refused(tmp_path, capsys, monkeypatch, budget):
+    """2^24 circles in a few kilobytes; the budget the message names (read
+    when a reading starts) refuses them before a single entity is read: the
+    blocks are counted first (expanding 200 000 of them before the refusal
+    took half a minute)."""
+    if budget is not None:
+        monkeypatch.setattr(seed001, "ENTITY_BUDGET", budget)
     read = 0
     entity_items_of = seed001._entity_items_of
 
@@ -117,18 +131,30 @@ def test_nested_inserts_past_the_budget_are_refused(tmp_path, capsys, monkeypatc
 
     monkeypatch.setattr(seed001, "_entity_items_of", counted)
     doc, msp = _doc()
-    doc.blocks.new("B0").add_circle((0, 0), 0.5)
-    for k in range(1, 25):
-        blk = doc.blocks.new(f"B{k}")
-        blk.add_blockref(f"B{k - 1}", (0, 0))
-        blk.add_blockref(f"B{k - 1}", (0.01 * k, 0))
-    msp.add_blockref("B24", (10, 10))
+    _bomb(doc, msp)
     status, err, deck = _run(doc, tmp_path, capsys)
     assert status == 1
-    assert err.strip().endswith("the drawing expands to more than 5000 entities (blocks "
-                                "inserted into blocks); split it, or explode fewer blocks")
+    assert err.strip().endswith(f"the drawing expands to more than {budget or 200000} "
+                                f"entities (blocks inserted into blocks); split it, or explode "
+                                f"fewer blocks")
     assert deck == ""                          # nothing written
-    assert read == 5000                        # the 5001st entity is refused unread
+    assert read == 0                           # refused before anything is exploded
+
+
+def test_the_count_before_reading_is_the_readings_own(monkeypatch):
+    """Just at the budget a drawing is read whole; one entity more and it is
+    refused, whether the count first or the reading finds it (a block that
+    inserts itself leaves the counting to the reading)."""
+    doc, msp = _doc()
+    _bomb(doc, msp, levels=6)                  # 64 circles, 2 * 63 INSERTs below msp's one
+    assert seed001.expanded_count(doc) == 64 + 126 + 1
+    monkeypatch.setattr(seed001, "ENTITY_BUDGET", 191)
+    assert len(seed001.read_drawing(doc).items) == 64
+    monkeypatch.setattr(seed001, "ENTITY_BUDGET", 190)
+    with pytest.raises(seed001.TooBig):
+        seed001.read_drawing(doc)
+    doc.blocks.get("B0").add_blockref("B3", (0, 0))   # B3 -> B2 -> B1 -> B0 -> B3
+    assert seed001.expanded_count(doc) is None
 
 
 @pytest.mark.parametrize("corners", [
