@@ -570,8 +570,10 @@ def summary(run: Interpolation) -> str:
     if run.fixed_ratio:
         extra = [sum(fixed_ratio_count(abs(f[a]), run.volume) - abs(f[a]) for f in run.frames)
                  for a in (0, 1)]
+        own = [sum(abs(f[a]) for f in run.frames) for a in (0, 1)]
         lines.append(f"free-running, the fixed ratio would give X {extra[0]} and Y {extra[1]} "
-                     f"pulses too many; each axis was stopped after its own")
+                     f"pulses too many; each axis was stopped after its own pulses (X {own[0]}, "
+                     f"Y {own[1]})")
     return "\n".join(lines) + "\n"
 
 

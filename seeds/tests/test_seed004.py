@@ -254,6 +254,25 @@ def test_master_interpolator_on_the_documents_frame() -> None:
         assert steps <= {(0, 0), (1, 0), (0, 1)}
 
 
+def test_master_interpolators_lag_costs_one_x_pulse_as_the_page_says() -> None:
+    """SEED004-TAPE-CODES.md said "one pulse more than without lag" for
+    1.772 against 1.106: the worst point is one X pulse behind a point of
+    the unlagged path, and one X pulse is dy/|(dx, dy)| across the line."""
+    plain = s4.interpolate(9813, 8765, "binary")
+    run = s4.interpolate(9813, 8765, "master", lag=8)
+    k = run.worst
+    ahead = next(i for i, (x, y) in enumerate(zip(plain.xs, plain.ys))
+                 if (x, y) == (run.xs[k] + 1, run.ys[k]))
+    one_x = 8765 / math.hypot(9813, 8765)
+    assert run.deviation[k] == pytest.approx(plain.deviation[ahead] + one_x)
+    assert plain.deviation[ahead] == pytest.approx(plain.max_deviation)
+    page = " ".join((ROOT / "docs" / "SEED004-TAPE-CODES.md").read_text().split())
+    assert (f"That is {run.max_deviation - plain.max_deviation:.3f} pulses more than without "
+            f"lag") in page
+    assert f"8765/√(9813² + 8765²) = {one_x:.3f} pulses across the line" in page
+    assert "one pulse more than without lag" not in page
+
+
 def test_master_command(capsys) -> None:
     assert main(["dda", "9813", "8765", "--method", "master", "--lag", "8"]) == 0
     out = capsys.readouterr().out
@@ -409,6 +428,12 @@ def test_fixed_ratio_on_the_documents_frame() -> None:
     assert run.max_deviation == pytest.approx(698.135, abs=1e-3)
     assert s4.fixed_ratio_count(9813, 10000) == s4.fixed_ratio_count(8765, 10000) == 10000
     assert "X 187 and Y 1235 pulses too many" in s4.summary(run)
+    # the line was cut short: "...; each axis was stopped after its own"
+    assert s4.summary(run).endswith("X 187 and Y 1235 pulses too many; each axis was stopped "
+                                    "after its own pulses (X 9813, Y 8765)\n")
+    split = s4.summary(s4.interpolate(-98132, 87647, "counter", 10000, max_pulses=9999,
+                                      fixed_ratio=True))
+    assert split.endswith("each axis was stopped after its own pulses (X 98132, Y 87647)\n")
 
 
 @given(st_ratio())
