@@ -612,6 +612,7 @@ def read_params(text: str, where: str = "parameters") -> tuple[dict[str, int], l
     values = defaults()
     given: dict[str, tuple[int, int]] = {}
     notes: list[str] = []
+    refused: list[tuple[int, str]] = []      # (index in notes, name) of a value set to default
     for no, raw in enumerate(text.splitlines(), 1):
         line = raw.split("#", 1)[0].strip()
         if not line:
@@ -628,15 +629,23 @@ def read_params(text: str, where: str = "parameters") -> tuple[dict[str, int], l
         try:
             number = int(value)
         except ValueError:
+            refused.append((len(notes), name))
             notes.append(f"{where}: line {no}: {name} = {value!r} is not a whole number "
-                         f"{param.low}..{param.high}; set to the default {param.default}")
+                         f"{param.low}..{param.high}")
             continue
         if not param.low <= number <= param.high:
+            refused.append((len(notes), name))
             notes.append(f"{where}: line {no}: {name} = {number} is out of range "
-                         f"{param.low}..{param.high}; set to the default {param.default}")
+                         f"{param.low}..{param.high}")
             continue
         values[name] = number
         given[name] = (no, number)
+    for k, name in refused:          # the machine's axes are known only at the end
+        if values["axes"] in PARAM_BY_NAME[name].axes:
+            notes[k] += f"; set to the default {PARAM_BY_NAME[name].default}"
+        else:
+            notes[k] += (f", and {name} is not a parameter of a {values['axes']}-axis "
+                         f"machine; ignored")
     for name, (no, _) in given.items():
         if values["axes"] not in PARAM_BY_NAME[name].axes:
             notes.append(f"{where}: line {no}: {name} is not a parameter of a "
@@ -922,10 +931,18 @@ def deck_polylines(text: str) -> list[list[Point]]:
 
 
 def _numbers(text: str | None, option: str) -> list[int]:
-    if not text:
+    """The transmission numbers of a fault option, 1 or more, comma-separated;
+    ValueError naming the option for anything else (an empty item too:
+    ``1,,2`` is a slip, not two numbers)."""
+    if text is None:
         return []
+    items = text.split(",")
+    empty = next((k for k, v in enumerate(items, 1) if not v.strip()), None)
+    if empty is not None:
+        raise ValueError(f"{option} {text!r}: item {empty} is empty; expected transmission "
+                         f"numbers like 2,5,9")
     try:
-        out = [int(v) for v in text.split(",") if v.strip()]
+        out = [int(v) for v in items]
     except ValueError:
         raise ValueError(f"{option} {text!r}: expected transmission numbers "
                          f"like 2,5,9") from None

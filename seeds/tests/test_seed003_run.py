@@ -119,6 +119,10 @@ def test_cnclink_received_equals_output(tmp_path: Path) -> None:
 @pytest.mark.parametrize("args, message", [
     (["--drop", "x"], "cnclink: --drop 'x': expected transmission numbers like 2,5,9"),
     (["--noise", "0"], "cnclink: --noise '0': transmissions are numbered from 1"),
+    # an empty item was skipped: 1,,2 taken as 1,2
+    (["--drop", "1,,2"], "cnclink: --drop '1,,2': item 2 is empty; expected transmission "
+                         "numbers like 2,5,9"),
+    (["--corrupt", "3,"], "cnclink: --corrupt '3,': item 2 is empty"),
     (["--limits", "5"], "cnclink: --limits '5': expected X,Y in whole pulses"),
     (["--resend", "-1"], "cnclink: --resend -1: expected a whole number from 0"),
     (["--stop-at", "0"], "cnclink: --stop-at 0: expected a whole number from 1"),
@@ -174,6 +178,20 @@ def test_parameter_entry_checks_ranges() -> None:
         "p.txt: line 5: feed = 'x' is not a whole number 1..10000000; set to the default 60000",
         "p.txt: line 6: expected 'name = value', got 'm 3'",
         "p.txt: line 3: z1 is not a parameter of a 2-axis machine; ignored",
+    ]
+
+
+def test_a_bad_value_of_another_axis_group_is_said_to_be_unused() -> None:
+    # "z0 = -1 is out of range 0..32767; set to the default 500" on a machine
+    # of 2 axes, which has no z0
+    values, notes = s3.read_params("z0 = -1\nz5 = x\naxes = 2\nm = 0\n", "p.txt")
+    assert values["z0"] == 500 and values["m"] == 4
+    assert notes == [
+        "p.txt: line 1: z0 = -1 is out of range 0..32767, and z0 is not a parameter of a "
+        "2-axis machine; ignored",
+        "p.txt: line 2: z5 = 'x' is not a whole number 0..32767, and z5 is not a parameter "
+        "of a 2-axis machine; ignored",
+        "p.txt: line 4: m = 0 is out of range 1..255; set to the default 4",
     ]
 
 
