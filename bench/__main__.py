@@ -24,7 +24,7 @@ import time
 from collections.abc import Sequence
 from pathlib import Path
 
-from harness.files import write_whole
+from harness.files import quiet_when_output_closes, write_whole
 
 from . import boards, measure, report, run_board, tours, tsplib
 
@@ -108,6 +108,7 @@ def write_outputs(rows: Sequence[dict], out: Path,
     return text
 
 
+@quiet_when_output_closes
 def main(argv: Sequence[str] | None = None) -> int:
     args = build_parser().parse_args(argv)
     if args.report:

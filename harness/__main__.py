@@ -18,6 +18,7 @@ from collections.abc import Callable, Sequence
 from pathlib import Path
 
 from . import f77check, tape, verify
+from .files import quiet_when_output_closes
 
 
 def _write(text: str, stream=None) -> None:
@@ -122,6 +123,7 @@ def build_parser() -> argparse.ArgumentParser:
     return parser
 
 
+@quiet_when_output_closes
 def main(argv: Sequence[str] | None = None) -> int:
     """Run one subcommand; returns the exit status (2 on a usage error)."""
     parser = build_parser()

@@ -16,10 +16,14 @@ straight into; a symbolic link at the target is replaced, not followed.
 from __future__ import annotations
 
 import errno
+import functools
+import io
 import os
+import select
 import stat
+import sys
 import tempfile
-from collections.abc import Iterable
+from collections.abc import Callable, Iterable
 from pathlib import Path
 
 
@@ -100,3 +104,45 @@ def ascii_text(data: bytes, unit: str = "line") -> str:
     line = data.count(b"\n", 0, bad) + 1
     column = bad - (data.rfind(b"\n", 0, bad) + 1) + 1
     raise ValueError(f"{unit} {line}, column {column}: byte {data[bad]:#04x} is not ASCII")
+
+
+def _reader_gone(stream) -> bool:
+    """Whether ``stream`` is a pipe whose reader has closed it (poll's
+    POLLERR on its write end); True when that cannot be asked."""
+    try:
+        poller = select.poll()
+        poller.register(stream.fileno(), select.POLLOUT)
+        return any(ev & select.POLLERR for _, ev in poller.poll(0))
+    except (AttributeError, OSError, ValueError, io.UnsupportedOperation):
+        return True
+
+
+def quiet_when_output_closes(main: Callable[..., int]) -> Callable[..., int]:
+    """A command's ``main``, stopped quietly when the reader of its standard
+    output (or error) closes the pipe early (``python -m seeds ... | head -1``):
+    exit status 2, an I/O failure, instead of BrokenPipeError's traceback
+    or Python's "Exception ignored ... BrokenPipeError" at its last flush.
+    The closed stream is pointed at /dev/null so that nothing written after
+    can fail again.  A BrokenPipeError with both streams still read (a pipe
+    to a child process, say) is not this, and is raised as it was."""
+
+    @functools.wraps(main)
+    def wrapped(*args, **kwargs) -> int:
+        try:
+            status = main(*args, **kwargs)
+            sys.stdout.flush()
+            return status
+        except BrokenPipeError:
+            gone = [s for s in (sys.stdout, sys.stderr) if _reader_gone(s)]
+            if not gone:
+                raise
+            for stream in gone:
+                try:
+                    null = os.open(os.devnull, os.O_WRONLY)
+                    os.dup2(null, stream.fileno())
+                    os.close(null)
+                except (OSError, ValueError, io.UnsupportedOperation):
+                    pass
+            return 2
+
+    return wrapped

@@ -11,6 +11,8 @@ import argparse
 import sys
 from collections.abc import Callable, Sequence
 
+from harness.files import quiet_when_output_closes
+
 from . import gerber, seed001, seed001_dmc, seed002, seed003, seed004, tapereport, ural1
 from .options import Parser
 
@@ -42,6 +44,7 @@ def build_parser() -> argparse.ArgumentParser:
     return parser
 
 
+@quiet_when_output_closes
 def main(argv: Sequence[str] | None = None) -> int:
     """Run one subcommand; returns the exit status (2 on a usage error)."""
     parser = build_parser()

@@ -46,7 +46,7 @@ from shapely.geometry import LineString, Point, Polygon, box
 from shapely.geometry.base import BaseGeometry
 
 from harness import cards
-from harness.files import write_whole
+from harness.files import quiet_when_output_closes, write_whole
 
 from .contour import FIELD_MM
 from .options import Parser, mm_list
@@ -947,6 +947,7 @@ def add_gerber2deck(sub: argparse._SubParsersAction) -> None:
     _arguments(p)
 
 
+@quiet_when_output_closes
 def main(argv: Sequence[str] | None = None) -> int:
     """The console script ``gerber2deck``."""
     parser = Parser(prog="gerber2deck", description=HELP)

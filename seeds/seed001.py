@@ -62,7 +62,7 @@ import ezdxf
 import shapely
 
 from harness import cards
-from harness.files import write_whole
+from harness.files import quiet_when_output_closes, write_whole
 
 from .contour import FIELD_MM, ArcEl, Seg, arc_chords, contour_cards, distance_to
 from .options import Parser, mm_list
@@ -767,6 +767,7 @@ def add_dxf2deck(sub: argparse._SubParsersAction) -> None:
     _dxf2deck_arguments(p)
 
 
+@quiet_when_output_closes
 def main(argv: Sequence[str] | None = None) -> int:
     """The console script ``dxf2deck``: ``python -m seeds dxf2deck`` alone."""
     parser = Parser(prog="dxf2deck", description=DXF2DECK_HELP)

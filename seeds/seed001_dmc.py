@@ -40,7 +40,7 @@ from collections.abc import Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
 
-from harness.files import write_whole
+from harness.files import quiet_when_output_closes, write_whole
 
 from . import seed001
 from .contour import ArcEl, Seg, arc_chords
@@ -521,6 +521,7 @@ def add_dxf2dmc(sub: argparse._SubParsersAction) -> None:
     _arguments(p)
 
 
+@quiet_when_output_closes
 def main(argv: Sequence[str] | None = None) -> int:
     """The console script ``dxf2dmc``: ``python -m seeds dxf2dmc`` alone."""
     parser = Parser(prog="dxf2dmc", description=DXF2DMC_HELP)
