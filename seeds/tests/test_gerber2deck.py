@@ -241,3 +241,13 @@ def test_a_gerber_file_cut_short_is_said(tmp_path):
     whole.write_text(BOARD)
     proc = g2d(whole, "-o", tmp_path / "whole.crd")
     assert proc.returncode == 0 and "M02" not in proc.stderr, proc.stderr
+
+
+def test_a_file_with_no_copper_is_exit_2_as_the_page_says(tmp_path):
+    from pathlib import Path
+    page = " ".join((Path(__file__).resolve().parents[2] / "docs" / "GERBER.md")
+                    .read_text().split())
+    assert "Exit status 2: a file gerbonara cannot read (its error in one line), a copper " \
+           "file with no copper in it" in page
+    proc = refused(tmp_path, HEAD + "M02*\n")
+    assert proc.returncode == 2 and "c.gbr: no copper in it" in proc.stderr

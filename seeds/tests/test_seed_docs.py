@@ -177,3 +177,15 @@ def test_readmes_table_gives_only_options_the_commands_have() -> None:
                 assert option in have, (name, option, sorted(have))
                 checked += 1
     assert checked >= 25, checked
+
+
+def test_command_lines_on_the_pages_run_as_written() -> None:
+    """A command line shown on a seed page is run with `python -m seeds`
+    (GERBER.md showed `gerber2deck COPPER.gbr ...`, which is no program on
+    the PATH of a checkout)."""
+    for page in PAGES + ["GERBER.md"]:
+        text = (ROOT / "docs" / page).read_text()
+        for block in re.findall(r"```sh\n(.*?)```", text, re.S):
+            for line in block.splitlines():
+                first = line.split()[0] if line.strip() else ""
+                assert first not in SUBCOMMANDS, (page, line)
