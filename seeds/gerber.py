@@ -165,9 +165,9 @@ def read_drill(path: str | Path) -> tuple[list[Hole], int, list[int]]:
     """The holes of an Excellon file in file order, how many slots routed
     with M15/M16 it has, and the numbers of its lines that are G85 slots;
     the slots are left out.  A G85 line is blanked before gerbonara reads
-    the file, so that its line numbers stay the file's (the next hit is read
-    from its own coordinates: a hit that leaves one out takes it from the
-    hit before the slot, as KiCad, which writes both, never needs)."""
+    the file, so that its line numbers stay the file's.  A hit after it that
+    leaves out a coordinate then takes it from the hit before the slot, not
+    from the slot's end (KiCad writes both coordinates of every hit)."""
     from gerbonara.graphic_objects import Flash
     from gerbonara.utils import MM
     try:
@@ -175,7 +175,8 @@ def read_drill(path: str | Path) -> tuple[list[Hole], int, list[int]]:
         lines = text.splitlines()
         g85 = [k for k, line in enumerate(lines, start=1) if G85_SLOT.match(line.strip())]
         if g85:
-            text = "\n".join("" if k in set(g85) else line
+            blank = set(g85)
+            text = "\n".join("" if k in blank else line
                              for k, line in enumerate(lines, start=1)) + "\n"
         with warnings.catch_warnings(record=True) as said:
             warnings.simplefilter("always")

@@ -612,7 +612,7 @@ def read_params(text: str, where: str = "parameters") -> tuple[dict[str, int], l
     values = defaults()
     given: dict[str, tuple[int, int]] = {}
     notes: list[str] = []
-    refused: list[tuple[int, str]] = []      # (index in notes, name) of a value set to default
+    refused: list[tuple[int, str]] = []      # (index in notes, name) of a value not taken
     for no, raw in enumerate(text.splitlines(), 1):
         line = raw.split("#", 1)[0].strip()
         if not line:
