@@ -74,6 +74,14 @@ RULES: dict[str, str] = {
                      "takes them, so the checker looks for them)",
     "F77-DECL": "every variable is declared (gfortran: 'has no IMPLICIT type')",
     "F77-INDEX": "the index of the directory's README.md is the one the routines give",
+    "F77-BLOCKDATA": "no BLOCK DATA (a BLOCK DATA in a library reaches the program only "
+                     "if the linker pulls it in: GNU ld does, gold does not)",
+    "F77-STOP": "no STOP or PAUSE: no routine stops the run (errors go through CMERR)",
+    "F77-SAVE": "every COMMON block of the master text is SAVEd in its section",
+    "F77-HEADER": "a routine's header (with a README index): 'C     NAME - what it "
+                  "does (PROGRAM)' in its first lines, the program its prefix says, "
+                  "SOURCE: and CHANGES:, and 'C     END OF NAME' before its END",
+    "F77-LAYER": "a shared routine (CM) calls no routine of one program (TZ, MT, ML)",
     "F77-COMPILE": "the file compiles (other gfortran -fsyntax-only errors)",
 }
 
@@ -509,6 +517,10 @@ class _FileChecker:
             if m:
                 name = m.group(1)
                 self._open_unit(kind, name, st)
+                if kind == "BLOCK DATA":
+                    self.add(*st.at(0), "F77-BLOCKDATA", "BLOCK DATA: set the block's "
+                             "values in a routine the program calls first (as TZCODE "
+                             "sets the tape code)")
                 if name:
                     self._name(st, m.start(1), name, kind)
                 if m.lastindex and m.lastindex >= 2 and m.group(2):
@@ -559,6 +571,12 @@ class _FileChecker:
             return
         if t == "END":
             self._close_unit()
+            return
+        m = re.match(r"(STOP|PAUSE)(?![A-Z])", t)
+        if m:
+            self.add(*st.at(off), "F77-STOP", f"{m.group(1)}: a routine does not stop the "
+                     "run; an error of the input goes through CMERR, and the package goes on "
+                     "or is stopped by its caller")
             return
         m = _END_F90.match(t)
         if m:
@@ -894,6 +912,75 @@ def master_checks(paths: Iterable[Path], master: dict[str, list[str]],
     return out
 
 
+def save_problems(master: Path) -> list[Violation]:
+    """Every COMMON block of the master text is SAVEd in its own section
+    (TENZOR's caller, a modern main program, declares none of them, and a
+    block declared only in subprograms may become undefined when they
+    return: the standard's 17.3)."""
+    lines = master.read_text(encoding="ascii", errors="replace").splitlines()
+    out: list[Violation] = []
+    for _name, a, b in common_copies(lines):
+        saved = {blk for line in lines[a:b + 1] if re.match(r"^      SAVE\b", line)
+                 for blk in re.findall(r"/([A-Z][A-Z0-9]*)/", line)}
+        for n in range(a, b + 1):
+            m = _COMMON_STMT.match(lines[n])
+            if m and m.group(1) not in saved:
+                out.append(Violation(str(master), n + 1, 7, "F77-SAVE",
+                                     f"COMMON /{m.group(1)}/ is not SAVEd in its section: "
+                                     f"add SAVE /{m.group(1)}/ after it"))
+    return out
+
+
+#: The program of each routine prefix (legacy/README.md, "The names").
+PROGRAMS = {"TZ": "TENZOR", "MT": "M703T", "ML": "M703L", "CM": "SHARED"}
+
+
+def header_problems(path: Path, units: set[str]) -> list[Violation]:
+    """The header a routine of an indexed directory opens and ends with
+    (legacy/README.md): its title comment in the first three lines naming
+    the routine and its program, SOURCE:, CHANGES:, and ``C     END OF
+    NAME`` before its END; and, for a shared (CM) routine, no call of a
+    routine of one program."""
+    shown = str(path)
+    try:
+        r = read_routine(path, units)
+    except ValueError as exc:
+        return [Violation(shown, 1, 1, "F77-HEADER", str(exc).split(": ", 1)[-1])]
+    lines = path.read_text(encoding="ascii").splitlines()
+    out: list[Violation] = []
+    name = r.name
+    title = next((k for k, ln in enumerate(lines[:3]) if _TITLE.match(ln)), 0)
+    if _TITLE.match(lines[title]).group(1) != name:
+        out.append(Violation(shown, title + 1, 7, "F77-HEADER", f"the title comment names "
+                             f"{_TITLE.match(lines[title]).group(1)}, the routine is {name}"))
+    want = PROGRAMS.get(name[:2], name if name in ("TENZOR", "M703T", "M703L") else "")
+    if want and r.program != want:
+        out.append(Violation(shown, title + 1, 7, "F77-HEADER",
+                             f"the header says ({r.program or 'no program'}): {name} is of "
+                             f"{want}, as its name says"))
+    for key in ("SOURCE:", "CHANGES:"):
+        if not any(ln.startswith(f"C     {key}") for ln in lines):
+            out.append(Violation(shown, title + 1, 1, "F77-HEADER",
+                                 f"no 'C     {key}' line in the header"))
+    end = max((k for k, ln in enumerate(lines) if ln.strip() == "END"), default=len(lines))
+    if end == 0 or lines[end - 1] != f"C     END OF {name}":
+        out.append(Violation(shown, end + 1 if end < len(lines) else len(lines), 1,
+                             "F77-HEADER", f"the routine's END is not preceded by "
+                             f"'C     END OF {name}'"))
+    if name.startswith("CM"):
+        for callee in r.calls:
+            if PROGRAMS.get(callee[:2], "SHARED") != "SHARED" or \
+                    callee in ("TENZOR", "M703T", "M703L"):
+                n = next((k for k, ln in enumerate(lines)
+                          if ln[:1] not in "Cc*" and re.search(rf"\b{callee}\b", ln[6:72])),
+                         0)
+                out.append(Violation(shown, n + 1, 7, "F77-LAYER",
+                                     f"{name}, a shared routine, calls {callee} of "
+                                     f"{PROGRAMS.get(callee[:2], callee)}: give it as an "
+                                     "argument, as CMASSM is given MTITEM or MLITEM"))
+    return out
+
+
 def write_copies(paths: Iterable[Path], master: dict[str, list[str]]) -> list[Path]:
     """Rewrite every copy from the master text; the files that changed."""
     changed = []
@@ -1134,8 +1221,24 @@ def check_dir(path: str | os.PathLike[str] = "legacy",
     it exists.
     """
     master = Path(path) / MASTER
-    return check_files(find_sources(path), compiler, notes,
-                       master if master.is_file() else None)
+    files = find_sources(path)
+    return sorted(set(check_files(files, compiler, notes, master if master.is_file() else None)
+                      + directory_problems(Path(path), files)))
+
+
+def directory_problems(root: Path, files: list[Path]) -> list[Violation]:
+    """The rules of a directory as legacy/ is kept: with a master COMMON
+    text, every block SAVEd in it; with a README.md, its index current and
+    every routine's header as the index reads it."""
+    out: list[Violation] = []
+    if (root / MASTER).is_file():
+        out += save_problems(root / MASTER)
+    if (root / "README.md").is_file():
+        out += [Violation(str(root / "README.md"), 1, 1, "F77-INDEX", p)
+                for p in index_problems(root)]
+        units = {p.stem.upper() for p in files}
+        out += [v for p in files for v in header_problems(p, units)]
+    return out
 
 
 def main(directory: str = "legacy", write_common: bool = False, index: bool = False) -> int:
@@ -1170,9 +1273,7 @@ def main(directory: str = "legacy", write_common: bool = False, index: bool = Fa
     notes: list[str] = []
     violations = check_files(files, notes=notes,
                              master=master if master.is_file() else None)
-    if (root / "README.md").is_file():
-        violations += [Violation(str(root / "README.md"), 1, 1, "F77-INDEX", p)
-                       for p in index_problems(root)]
+    violations += directory_problems(root, files)
     for v in violations:
         print(v)
     for note in notes:

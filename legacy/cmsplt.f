@@ -81,9 +81,10 @@ C     ---- ANYTHING TO DO? ARCS BEYOND THE LIMIT ARE ERRORS ------------
 C     ---- MOVE THE FRAMES TO THE TOP OF THE TABLE ---------------------
       N = NFR - I1 + 1
       IF (NFR + N .GT. MXFRM) THEN
+         CALL CMITOA(MXFRM, SN, LN)
          CALL CMERR('TENZOR', JFCRD(I1), 1, 'CAPACITY EXCEEDED: NO '
-     1      // 'ROOM IN THE FRAME TABLE TO SPLIT THE FRAMES OF ONE '
-     2      // 'TAPE (PARAMETER MXFRM)')
+     1      // 'ROOM IN THE FRAME TABLE OF ' // SN(1:LN) // ' FRAMES '
+     2      // 'TO SPLIT THE FRAMES OF ONE TAPE (PARAMETER MXFRM)')
          LFULL = 1
          RETURN
       END IF

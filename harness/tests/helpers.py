@@ -197,3 +197,15 @@ def assert_session(got: list[str], want: list[str], where: object) -> None:
         assert got[:len(head)] == head and got[len(got) - len(tail):] == tail, (where, got)
     else:
         assert got == want, (where, "\n".join(got))
+
+
+def file_size_limit(limit: int):
+    """For subprocess's preexec_fn (with restore_signals=False): files may
+    grow to ``limit`` bytes; a longer write fails with EFBIG (SIGXFSZ
+    ignored), as a full disk fails with ENOSPC."""
+    def apply() -> None:
+        import resource
+        import signal
+        signal.signal(signal.SIGXFSZ, signal.SIG_IGN)
+        resource.setrlimit(resource.RLIMIT_FSIZE, (limit, limit))
+    return apply

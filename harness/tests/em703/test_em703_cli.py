@@ -5,13 +5,14 @@ Fortran runtime error; outputs are the same bytes from run to run."""
 
 from __future__ import annotations
 
+import subprocess
 from pathlib import Path
 
 import pytest
 
 from harness.tape import Frame, encode
 
-from harness.tests.helpers import run, write_job
+from harness.tests.helpers import file_size_limit, run, write_job
 
 SUBCOMMANDS = ["list", "sim", "svg", "gcode", "gerber", "punch", "view", "html"]
 
@@ -334,3 +335,20 @@ def test_a_tape_too_long_to_draw_names_the_command(em703_exe, tmp_path) -> None:
     line = one_line(run(em703_exe, "sim", tape, "--svg", tmp_path / "s.svg", check=1))
     assert "that sim --svg writes one by one" in line
     assert not (tmp_path / "s.svg").exists()
+
+
+def test_a_full_disk_leaves_the_old_output_and_no_temporary_file(em703_exe, example_jobs,
+                                                                 tmp_path) -> None:
+    """Files may not grow past 200 bytes (SIGXFSZ ignored: a write fails
+    with EFBIG, as on a full disk with ENOSPC): the output fails, exit 2
+    naming it, and the file that was there is left as it was."""
+    target = tmp_path / "board.ngc"
+    target.write_text("the old program\n")
+    for sub in ("gcode", "svg", "gerber", "html"):
+        proc = subprocess.run([str(em703_exe), sub, str(example_jobs[0]), "-o", str(target)],
+                              capture_output=True, preexec_fn=file_size_limit(200),
+                              restore_signals=False, timeout=120)
+        err = proc.stderr.decode()
+        assert proc.returncode == 2 and err.startswith(f"{target}: cannot write"), (sub, err)
+        assert target.read_text() == "the old program\n"
+        assert sorted(p.name for p in tmp_path.iterdir()) == ["board.ngc"]

@@ -36,6 +36,13 @@ def subroutine(name: str, body: list[str], end: str = "      END") -> list[str]:
             end]
 
 
+def headed(name: str, body: list[str]) -> list[str]:
+    """A shared routine with the header of an indexed directory (legacy/README.md)."""
+    return (["C     " + name + " - TEST UNIT   (SHARED)", "C     SOURCE:  THE TESTS.",
+             "C     CHANGES: SEE GIT."] + subroutine(name, body)[1:-1]
+            + ["C     END OF " + name, "      END"])
+
+
 def rules(directory: Path, compiler: str | None = None) -> set[str]:
     return {v.rule for v in check_dir(directory, compiler=compiler)}
 
@@ -127,6 +134,8 @@ def test_clean_files_pass_gfortran_and_leave_no_files(tmp_path: Path) -> None:
 
 
 def test_clean_function_and_block_data(tmp_path: Path) -> None:
+    """A clean function passes; a BLOCK DATA, standard FORTRAN 77 as it is,
+    is the one rule it breaks: the project keeps none (the linkers)."""
     write(tmp_path, "iadd.f", [
         "      INTEGER FUNCTION IADD(I, J)",
         "      IMPLICIT NONE",
@@ -140,7 +149,72 @@ def test_clean_function_and_block_data(tmp_path: Path) -> None:
         "      COMMON /CMCNT/ NPAD",
         "      DATA NPAD /0/",
         "      END"])
-    assert check_dir(tmp_path) == []
+    found = check_dir(tmp_path)
+    assert [(Path(v.path).name, v.line, v.rule) for v in found] == [
+        ("cminit.f", 1, "F77-BLOCKDATA")], found
+
+
+@pytest.mark.parametrize("stmt", ["      STOP", "      STOP 'TABLE FULL'", "      PAUSE 7",
+                                  "      IF (I .GT. 1) STOP"])
+def test_no_routine_stops_the_run(tmp_path: Path, stmt: str) -> None:
+    write(tmp_path, "cmone.f", subroutine("CMONE", ["      I = 1", stmt]))
+    found = only(tmp_path, "F77-STOP")
+    assert found[0].line == 7 and "goes through CMERR" in found[0].message
+
+
+def test_a_variable_named_stop_is_not_a_stop(tmp_path: Path) -> None:
+    write(tmp_path, "cmone.f", subroutine("CMONE", ["      INTEGER STOPS", "      STOPS = 1"]))
+    assert check_dir(tmp_path, compiler=None) == []
+
+
+LEGACY = Path(__file__).resolve().parents[3] / "legacy"
+
+
+def legacy_copy(tmp_path: Path) -> Path:
+    """legacy/ as it is, to break one rule in."""
+    shutil.copytree(LEGACY, tmp_path / "leg")
+    return tmp_path / "leg"
+
+
+def test_a_block_the_master_does_not_save_is_named(tmp_path: Path) -> None:
+    root = legacy_copy(tmp_path)
+    master = root / "COMMON.inc"
+    text = master.read_text()
+    line = text[:text.index("      COMMON /CMFRT/")].count("\n") + 1
+    master.write_text(text.replace("      SAVE /CMFRT/\n", "", 1))
+    assert main(["f77check", "--write-common", str(root)]) == 1
+    found = [v for v in check_dir(root, compiler=None) if v.rule == "F77-SAVE"]
+    assert [(Path(v.path).name, v.line) for v in found] == [("COMMON.inc", line)], found
+    assert found[0].message == ("COMMON /CMFRT/ is not SAVEd in its section: add SAVE "
+                                "/CMFRT/ after it")
+
+
+@pytest.mark.parametrize("edit, rule, at, says", [
+    (lambda t: t.replace("C     CHANGES:", "C     HISTORY:"), "F77-HEADER", "title",
+     "no 'C     CHANGES:' line in the header"),
+    (lambda t: t.replace("C     END OF CMTRIM\n", ""), "F77-HEADER", "end",
+     "the routine's END is not preceded by 'C     END OF CMTRIM'"),
+    (lambda t: t.replace("(SHARED)", "(TENZOR)", 1), "F77-HEADER", "title",
+     "the header says (TENZOR): CMTRIM is of SHARED, as its name says"),
+    (lambda t: t.replace("      RETURN\n", "      CALL TZGCLR\n      RETURN\n", 1),
+     "F77-LAYER", "call", "CMTRIM, a shared routine, calls TZGCLR of TENZOR: give it as "
+                         "an argument, as CMASSM is given MTITEM or MLITEM"),
+])
+def test_the_header_and_the_layers_of_an_indexed_directory(tmp_path, edit, rule, at,
+                                                           says) -> None:
+    """With a README index, each routine's header is checked as the index
+    reads it, and a shared routine may not call a routine of one program."""
+    root = legacy_copy(tmp_path)
+    path = root / "cmtrim.f"
+    path.write_text(edit(path.read_text()))
+    lines = path.read_text().splitlines()
+    title = next(k for k, ln in enumerate(lines, 1) if ln.startswith("C     CMTRIM - "))
+    end = next(k for k, ln in enumerate(lines, 1) if ln == "      END")
+    call = next((k for k, ln in enumerate(lines, 1) if "CALL TZGCLR" in ln), 0)
+    line = {"title": title, "end": end, "call": call}[at]
+    found = [(Path(v.path).name, v.line, v.rule, v.message)
+             for v in check_dir(root, compiler=None) if v.rule in ("F77-HEADER", "F77-LAYER")]
+    assert found == [("cmtrim.f", line, rule, says)], found
 
 
 # ---------------------------------------------------------------------------
@@ -339,7 +413,7 @@ def test_file_named_after_unit(tmp_path: Path, file_name: str) -> None:
 
 
 def test_unnamed_main_program(tmp_path: Path) -> None:
-    write(tmp_path, "main.f", ["      IMPLICIT NONE", "      STOP", "      END"])
+    write(tmp_path, "main.f", ["      IMPLICIT NONE", "      CONTINUE", "      END"])
     assert "has no name" in only(tmp_path, "F77-UNIT")[0].message
 
 
@@ -463,8 +537,9 @@ MASTER_TEXT = ["C     THE MASTER TEXT",
                "      PARAMETER (MXPAD = 500)",
                "      INTEGER NPAD, IPX(MXPAD)",
                "      COMMON /CMPAD/ NPAD, IPX",
+               "      SAVE /CMPAD/",
                "C"]
-COPY = MASTER_TEXT[1:6]
+COPY = MASTER_TEXT[1:7]
 
 
 def master_tree(directory: Path, copy: list[str]) -> Path:
@@ -525,7 +600,7 @@ def test_legacy_has_a_master_for_every_block_it_uses() -> None:
 
 
 def test_a_readme_whose_index_is_stale_fails_the_check(tmp_path: Path, capsys) -> None:
-    write(tmp_path, "cmone.f", subroutine("CMONE", ["      I = 1"]))
+    write(tmp_path, "cmone.f", headed("CMONE", ["      I = 1"]))
     (tmp_path / "README.md").write_text(
         "# test\n\n<!-- index: written by `python -m harness f77check --index`; "
         "do not edit -->\nstale\n<!-- end of index -->\n", encoding="utf-8")

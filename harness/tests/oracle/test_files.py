@@ -8,6 +8,7 @@ import sys
 import pytest
 
 from harness.files import write_whole
+from harness.tests.helpers import file_size_limit
 
 
 def test_writes_and_replaces_whole(tmp_path):
@@ -37,6 +38,37 @@ def test_a_failed_write_leaves_the_old_file_and_no_temporary(tmp_path):
         write_whole(tmp_path / "dir", "x")
     assert target.read_text() == "good\n"
     assert sorted(p.name for p in tmp_path.iterdir()) == ["dir", "out.txt"]
+
+
+def test_a_full_disk_leaves_the_old_file_and_no_temporary(tmp_path):
+    """Files may not grow past 2 000 bytes (SIGXFSZ ignored: the write fails
+    with EFBIG, as a full disk fails with ENOSPC), in a child process: the
+    OSError reaches the caller, the old file is as it was, no temporary is
+    left; and a command of the seeds built on it says so in one line, exit 2."""
+    target = tmp_path / "out.txt"
+    write_whole(target, "good\n")
+    code = ("import sys\nfrom harness.files import write_whole\n"
+            "try:\n    write_whole(sys.argv[1], 'x' * 100_000)\n"
+            "except OSError as exc:\n    print(exc.errno, exc.strerror)\n")
+    proc = subprocess.run([sys.executable, "-c", code, str(target)], capture_output=True,
+                          text=True, preexec_fn=file_size_limit(2000), restore_signals=False,
+                          timeout=60)
+    assert proc.stdout.strip() == "27 File too large", (proc.stdout, proc.stderr)
+    assert target.read_text() == "good\n"
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["out.txt"]
+    deck = tmp_path / "flange.crd"
+    deck.write_text("old\n")
+    profile = ["-m", "seeds", "profile", "-o", str(deck)]
+    points = tmp_path / "points.txt"
+    points.write_text("".join(f"{i} {i * i % 97}\n" for i in range(200)))
+    proc = subprocess.run([sys.executable, *profile, str(points)], capture_output=True,
+                          text=True, preexec_fn=file_size_limit(2000), restore_signals=False,
+                          timeout=120)
+    assert proc.returncode == 2, (proc.stdout, proc.stderr)
+    assert "File too large" in proc.stderr and "Traceback" not in proc.stderr, proc.stderr
+    assert deck.read_text() == "old\n"
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["flange.crd", "out.txt",
+                                                            "points.txt"]
 
 
 def test_a_planted_link_is_replaced_not_followed(tmp_path):

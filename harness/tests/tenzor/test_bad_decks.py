@@ -11,6 +11,7 @@ import pytest
 
 from harness import tape
 from harness.deck import CardError, parse_deck
+from harness.tests.helpers import file_size_limit
 
 
 def card(**cols: str) -> str:
@@ -239,6 +240,7 @@ def test_an_envelope_beyond_its_table_is_one_error(run_tenzor):
     err = proc.stderr.decode()
     assert proc.returncode == 1
     assert err.count("(PARAMETER MXENV)") == 1 and "ERROR CARD 21 COL 1: CAPACITY" in err, err
+    assert "MORE THAN 20 CONTROL CARDS IN THE JOB ENVELOPE (PARAMETER MXENV)" in err, err
     assert (out / "GOOD.lst").read_text().count(" ENVELOPE *TIME 1") == 19
 
 
@@ -305,17 +307,6 @@ def _snapshot(out):
     return {p.name: (p.read_bytes() if p.is_file() else None) for p in sorted(out.iterdir())}
 
 
-def _file_size_limit(limit: int):
-    """For subprocess: files may grow to `limit` bytes; a longer write fails
-    with EFBIG (SIGXFSZ ignored), as a full disk fails with ENOSPC."""
-    def apply() -> None:
-        import resource
-        import signal
-        signal.signal(signal.SIGXFSZ, signal.SIG_IGN)
-        resource.setrlimit(resource.RLIMIT_FSIZE, (limit, limit))
-    return apply
-
-
 def test_failed_write_mid_package_leaves_earlier_files_untouched(tenzor_exe, tmp_path):
     """A write that fails part-way through the package (files may not grow
     past 2 000 bytes: the listing's write fails, as on a full disk): no file
@@ -329,7 +320,7 @@ def test_failed_write_mid_package_leaves_earlier_files_untouched(tenzor_exe, tmp
     before = _snapshot(out)
     deck.write_text(good.replace("1.00", "2.00"))
     proc = subprocess.run([str(tenzor_exe), str(deck), "-o", str(out)], capture_output=True,
-                          preexec_fn=_file_size_limit(2000), restore_signals=False,
+                          preexec_fn=file_size_limit(2000), restore_signals=False,
                           timeout=60)
     assert proc.returncode == 2
     err = proc.stderr.decode()

@@ -245,7 +245,8 @@ FIXED: list[tuple[str, object, int, str | None]] = [
      "ERROR CARD"),
     ("cards-cut-at-40", "\n".join(ln[:40] for ln in DEMO.splitlines()) + "\n", 1, "ERROR CARD"),
     ("thousands-of-packages", many_packages(2000), 0, None),
-    ("capacity-packages-MXPKG", many_packages(10001, "Q"), 1, "(PARAMETER MXPKG)"),
+    ("capacity-packages-MXPKG", many_packages(10001, "Q"), 1,
+     "MORE THAN 10000 PACKAGES IN ONE JOB (PARAMETER MXPKG)"),
     ("capacity-envelope-MXENV", "*NAME J\n" + "*TIME 1\n" * 25 + "*EXECUTE\n"
      + package("A", [GOOD_M]), 1, "(PARAMETER MXENV)"),
     ("capacity-pads-MXPAD-MXCRD", package("PADS", [P] + [
