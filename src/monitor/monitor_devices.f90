@@ -161,15 +161,28 @@ contains
         logical, intent(out) :: ok
         character(len=:), allocatable, intent(out) :: msg   !< why not, when not ok
         logical :: there
+        integer :: i, start
         out_dir = dir
         call make_dirs(dir, ok)
         if (ok) return
         inquire(file=dir, exist=there)
         if (there) then
             msg = 'a file of that name is in the way; -o names a directory'
-        else
-            msg = 'it could not be made (is its parent writable?)'
+            return
         end if
+        msg = 'it could not be made (is its parent writable?)'
+        ! a component longer than a file name may be (ENAMETOOLONG)
+        start = 1
+        do i = 1, len(dir) + 1
+            if (i <= len(dir)) then
+                if (dir(i:i) /= '/') cycle
+            end if
+            if (i - start > 255) then
+                msg = 'a name in it is longer than the 255 characters a file name may have'
+                return
+            end if
+            start = i + 1
+        end do
     end subroutine dev_set_output
 
     !> The card reader: the next line of the deck, its first 80 columns in card

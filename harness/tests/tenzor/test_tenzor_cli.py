@@ -57,6 +57,21 @@ def test_unwritable_output_directory_exits_2(tenzor_exe, tmp_path):
                                                  f"way; -o names a directory\n")
 
 
+def test_an_output_name_too_long_for_a_file_name_is_said_so(tenzor_exe, tmp_path):
+    """A name of 256 characters in the -o path cannot be made (ENAMETOOLONG);
+    255 can. Nothing is written for the long one."""
+    long = tmp_path / ("a" * 256) / "out"
+    proc = subprocess.run([tenzor_exe, EXAMPLE5, "-o", long], capture_output=True, text=True)
+    assert (proc.returncode, proc.stderr) == (2, f"tenzor: cannot create the output directory "
+                                                 f"{long}: a name in it is longer than the 255 "
+                                                 "characters a file name may have\n")
+    assert list(tmp_path.iterdir()) == []
+    ok = tmp_path / ("b" * 255)
+    proc = subprocess.run([tenzor_exe, EXAMPLE5, "-o", ok], capture_output=True, text=True)
+    assert proc.returncode == 0, proc.stderr
+    assert any(ok.glob("*.ptp"))
+
+
 def test_standard_input_and_default_output_directory(tenzor_exe, tmp_path):
     proc = subprocess.run([tenzor_exe], stdin=EXAMPLE5.open("rb"), capture_output=True,
                           text=True, cwd=tmp_path)
