@@ -79,23 +79,20 @@ contains
         type(cli_t), intent(out) :: cli
         character(len=:), allocatable :: arg, given
         integer :: nargs, i, k, nmove
+        logical :: help_on
 
         nargs = command_argument_count()
         if (nargs == 0) call usage_error('', 'no subcommand')
         cli%command = get_arg(1)
+        ! em703 help SUBCOMMAND: that subcommand's help, found as any subcommand is
+        help_on = cli%command == 'help' .and. nargs >= 2
+        if (help_on) then
+            if (nargs > 2) call usage_error('', 'help takes one subcommand, not "' // &
+                get_arg(3) // '" too')
+            cli%command = get_arg(2)
+        end if
         if (cli%command == '-h' .or. cli%command == '--help' .or. cli%command == 'help') then
-            if (cli%command == 'help' .and. nargs >= 2) then
-                ! em703 help SUBCOMMAND: that subcommand's help
-                arg = get_arg(2)
-                if (.not. any(SUBCOMMANDS == arg) .or. len(arg) == 0) call usage_error('', &
-                    'no help on "' // arg // '": the subcommands are ' // &
-                    'list sim svg gcode gerber drill punch view split html check')
-                if (nargs > 2) call usage_error('', 'help takes one subcommand, not "' // &
-                    get_arg(3) // '" too')
-                call help(arg)
-            else
-                call help('')
-            end if
+            call help('')
             stop 0, quiet=.true.
         end if
         if (cli%command == '--version') then
@@ -107,6 +104,10 @@ contains
             if (SUBCOMMANDS(i) == cli%command) k = i
         end do
         if (k == 0) call usage_error('', 'unknown subcommand "' // cli%command // '"')
+        if (help_on) then
+            call help(cli%command)
+            stop 0, quiet=.true.
+        end if
         cli%file = ''
         cli%out = ''
         cli%svg = ''

@@ -336,7 +336,7 @@ contains
         type(error_t), allocatable :: err
         integer :: l
         integer(int64) :: ox, oy
-        logical :: open_end
+        logical :: open_end, told8, toldk
         complete = .false.
         open_end = .false.
         call read_job(path, job, err)
@@ -371,11 +371,16 @@ contains
         ! A job sheet without a code line: for the outputs' headings, the code
         ! the tapes told (a tape without a digit 3, 5, 6 or 9 tells neither)
         if (job%code == 'auto') then
-            if (any(runs%evidence > 0 .and. runs%code == '8')) then
-                job%code = trim(merge('8 and K', '8      ', &
-                                      any(runs%evidence > 0 .and. runs%code == 'K')))
+            told8 = any(runs%evidence > 0 .and. runs%code == '8')
+            toldk = any(runs%evidence > 0 .and. runs%code == 'K')
+            if (told8 .and. toldk) then
+                job%code = '8 and K'
+            else if (told8) then
+                job%code = '8'
+            else if (toldk) then
+                job%code = 'K'
             else
-                job%code = trim(merge('K     ', '8 or K', any(runs%evidence > 0)))
+                job%code = '8 or K'
             end if
         end if
     end subroutine load_job

@@ -235,10 +235,17 @@ def test_the_gerber_format_holds_up_to_its_last_digit(em703_exe, tmp_path, dx, s
             "point, beyond the 999999.999999 mm that the Gerber 6.6 format holds\n")
 
 
-def test_a_job_sheet_without_a_code_line_is_headed_with_the_tapes_code(em703_exe, tmp_path):
-    job = write_job(tmp_path, "NOCODE", {"cond": encode([Frame(dx=300, k=10),
-                                                         Frame(dx=-300, k=20)], "K")}, {})
+@pytest.mark.parametrize("codes, heading", [
+    ({"cond": "K"}, "K"), ({"small": "8"}, "8"), ({"small": "8", "cond": "K"}, "8 and K"),
+    ({}, "8 or K")])
+def test_a_job_sheet_without_a_code_line_is_headed_with_the_tapes_code(em703_exe, tmp_path,
+                                                                      codes, heading):
+    """Each tape is read in the code it tells (a digit 3, 5, 6 or 9); the
+    empty tapes of write_job tell neither."""
+    tapes = {key: encode([Frame(dx=300, k=10), Frame(dx=-300, k=20)], code)
+             for key, code in codes.items()}
+    job = write_job(tmp_path, "NOCODE", tapes, {})
     job.write_text("".join(l for l in job.read_text().splitlines(True)
                            if not l.startswith("code")))
-    first = run(em703_exe, "gerber", job, check=0).stdout.decode().splitlines()[0]
-    assert first == "G04 EM-703 job NOCODE, code K*"
+    first = run(em703_exe, "gerber", job, check=None).stdout.decode().splitlines()[0]
+    assert first == f"G04 EM-703 job NOCODE, code {heading}*"
