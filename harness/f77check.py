@@ -944,8 +944,8 @@ def header_problems(path: Path, units: set[str]) -> list[Violation]:
     shown = str(path)
     try:
         r = read_routine(path, units)
-    except ValueError as exc:
-        return [Violation(shown, 1, 1, "F77-HEADER", str(exc).split(": ", 1)[-1])]
+    except HeaderError as exc:
+        return [Violation(shown, exc.line, 1, "F77-HEADER", exc.text)]
     lines = path.read_text(encoding="ascii").splitlines()
     out: list[Violation] = []
     name = r.name
@@ -1040,6 +1040,14 @@ def _first_sentence(text: str) -> str:
     return text
 
 
+class HeaderError(ValueError):
+    """A file whose routine the index cannot read: ``path``, ``line``, ``text``."""
+
+    def __init__(self, path: Path, line: int, text: str) -> None:
+        super().__init__(f"{path}: line {line}: {text}")
+        self.path, self.line, self.text = path, line, text
+
+
 def read_routine(path: Path, units: set[str]) -> Routine:
     """The header, the calls (CALL, a function reference, a routine passed as
     an argument) and the COMMON copies of one file of legacy/."""
@@ -1047,13 +1055,13 @@ def read_routine(path: Path, units: set[str]) -> Routine:
     try:
         lines = data.decode("ascii").splitlines()
     except UnicodeDecodeError as exc:
-        line = data[:exc.start].count(b"\n") + 1
-        raise ValueError(f"{path}: line {line}: byte {data[exc.start]:03o} (octal) is not "
-                         "ASCII, as a FORTRAN 77 source is") from None
+        raise HeaderError(path, data[:exc.start].count(b"\n") + 1,
+                          f"byte {data[exc.start]:03o} (octal) is not ASCII, as a FORTRAN 77 "
+                          "source is") from None
     title = next((m for m in map(_TITLE.match, lines[:3]) if m), None)
     if title is None:
-        raise ValueError(f"{path}: line 1: no title comment in lines 1-3 (the index "
-                         "wants 'C     NAME - what it does')")
+        raise HeaderError(path, 1, "no title comment in lines 1-3 (the index wants "
+                                   "'C     NAME - what it does')")
     purpose, program = title.group(2).strip(), ""
     tag = _TAG.search(purpose)
     if tag:
@@ -1072,8 +1080,8 @@ def read_routine(path: Path, units: set[str]) -> Routine:
     source = _first_sentence(" ".join(para))
     unit = next((m for m in map(_UNIT_LINE.match, lines) if m), None)
     if unit is None:
-        raise ValueError(f"{path}: no PROGRAM, SUBROUTINE or FUNCTION statement (every "
-                         "file of the index holds one routine)")
+        raise HeaderError(path, 1, "no PROGRAM, SUBROUTINE or FUNCTION statement (every "
+                                   "file of the index holds one routine)")
     calls: list[str] = []
     for line in lines:
         if line[:1] in "Cc*" or _UNIT_LINE.match(line):
@@ -1148,8 +1156,9 @@ def index_problems(root: Path) -> list[str]:
     have = text[text.index(INDEX_BEGIN):text.index(INDEX_END) + len(INDEX_END)] + "\n"
     try:
         want = legacy_index(root)
-    except ValueError as exc:
-        return [f"the index cannot be made: {exc}"]
+    except HeaderError as exc:
+        return [f"the index cannot be made until {exc.path.name}'s header is mended "
+                "(F77-HEADER)"]
     if have != want:
         a, b = have.splitlines(), want.splitlines()
         k = next((i for i, (p, q) in enumerate(zip(a, b)) if p != q), min(len(a), len(b)))

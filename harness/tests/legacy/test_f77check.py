@@ -613,7 +613,8 @@ def test_a_readme_whose_index_is_stale_fails_the_check(tmp_path: Path, capsys) -
 @pytest.mark.parametrize("text, says", [
     (b"      PROGRAM X\n      END\n", "line 1: no title comment in lines 1-3"),
     (b"", "line 1: no title comment in lines 1-3"),
-    (b"C     ZZ - a routine\n      I = 1\n", "no PROGRAM, SUBROUTINE or FUNCTION statement"),
+    (b"C     ZZ - a routine\n      I = 1\n",
+     "line 1: no PROGRAM, SUBROUTINE or FUNCTION statement"),
     (b"C     ZZ - caf\xc3\xa9\n      PROGRAM X\n      END\n",
      "line 1: byte 303 (octal) is not ASCII"),
 ])
@@ -627,7 +628,9 @@ def test_a_file_the_index_cannot_read_is_named(tmp_path: Path, capsys, text, say
     (tmp_path / "zz.f").write_bytes(text)
     assert main(["f77check", str(tmp_path)]) == 1
     out = capsys.readouterr()
-    assert f"F77-INDEX: the index cannot be made: {tmp_path / 'zz.f'}: {says}" in out.out
+    line, text = says.split(": ", 1)
+    assert f"{tmp_path / 'zz.f'}:{line[5:]}:1: F77-HEADER: {text}" in out.out, out.out
+    assert "F77-INDEX: the index cannot be made until zz.f's header is mended" in out.out
     assert "Traceback" not in out.err
     assert main(["f77check", "--index", str(tmp_path)]) == 2
     err = capsys.readouterr().err
