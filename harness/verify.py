@@ -58,7 +58,7 @@ from pathlib import Path
 import numpy as np
 
 from . import raster, sim
-from .deck import FIELD, LAYERS, CardError, Package, parse_deck
+from .deck import FIELD, LAYERS, MAX_TOOL, CardError, Package, parse_deck
 from .shapes import (AnyShape, ArcBand, Disc, Layer, Origin, RoundRect, Stroke,
                      distinct_strokes, run_shapes)
 from .tape import (DIGITS_8, DIGITS_K, Frame, Tape, TapeError, decode, frame_rows,
@@ -69,7 +69,7 @@ TOLERANCE = 5
 #: The widest tolerance the command takes, units: half the widest tool.
 #: A wider one would let a tape leave out whole pads, and its check needs
 #: a raster as coarse as itself.
-MAX_TOLERANCE = 1000
+MAX_TOLERANCE = MAX_TOOL // 2
 #: Most reasons about shapes, and most about stray frames, listed per tape
 #: (then a count of the others).
 MAX_REASONS = 15
