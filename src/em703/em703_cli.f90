@@ -20,7 +20,7 @@ module em703_cli
     use base_text, only: str, lower, parse_int, parse_mm, parse_real
     use em703_codec, only: MAX_NUMBER
     use em703_jobsheet, only: parse_scale, machine_scale
-    use em703_sim, only: FIELD_MM
+    use em703_sim, only: FIELD_UNITS
     implicit none
     private
     public :: cli_t, parse_command_line
@@ -51,9 +51,8 @@ module em703_cli
         integer(int64) :: move(2) = 0               !< split DX DY, pulses
     end type cli_t
 
-    !> The field of the machine in 0.01 mm (sim --start), the widest tool
-    !> sim --svg draws (20 mm).
-    integer(int64), parameter :: FIELD_UNITS = nint(FIELD_MM * 100, int64), MAX_TOOL = 2000
+    !> The widest tool sim --svg draws, 0.01 mm (20 mm).
+    integer(int64), parameter :: MAX_TOOL = 2000
 
     !> The options of each subcommand, besides -h and --help.
     character(len=*), parameter :: SUBCOMMANDS(11) = [character(len=6) :: &

@@ -9,14 +9,12 @@ module em703_jobsheet
     use base_error, only: error_t, new_error, AT_LINE
     use base_io, only: read_text, dir_of
     use base_text, only: parse_int, parse_mm
+    use em703_sim, only: FIELD_UNITS
     implicit none
     private
     public :: job_t, layer_t, read_job, parse_scale, machine_scale, LAYER_KEYS, NLAYERS
 
     integer, parameter :: NLAYERS = 3
-    !> The widest tool a job sheet may name, and the farthest start point, in
-    !> 0.01 mm: the field's 1 200 mm.
-    integer(int64), parameter :: FIELD_UNITS = 120000
     character(len=5), parameter :: LAYER_KEYS(NLAYERS) = ['small', 'large', 'cond ']
 
     !> One tape of a job: its key, the file as named and as a path, its tool.

@@ -28,6 +28,8 @@ module em703_sim
     real(real64), parameter, public :: LINE_SPEED = 5500.0_real64, ARC_SPEED = 1500.0_real64, &
                                        TRAVEL_SPEED = 5500.0_real64
     real(real64), parameter, public :: FIELD_MM = 1200.0_real64
+    !> The same field in units of 0.01 mm (the job sheet's and sim --start's range).
+    integer(int64), parameter, public :: FIELD_UNITS = nint(FIELD_MM * 100, int64)
     real(real64), parameter, public :: PI = 3.14159265358979323846_real64, TWO_PI = 2 * PI
     !> Kinds of segments: a drawn line, a move with the tool raised, an arc or
     !> circle, a dot, and a raise without a move (K20 alone).
