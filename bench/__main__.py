@@ -31,16 +31,6 @@ from . import boards, measure, report, run_board, tours, tsplib
 ROOT = Path(__file__).resolve().parents[1]
 
 
-def _sizes(text: str) -> list[int]:
-    try:
-        sizes = [int(s.replace("_", "")) for s in text.split(",") if s.strip()]
-    except ValueError:
-        raise argparse.ArgumentTypeError(f"not a list of sizes: {text!r}") from None
-    if not sizes or min(sizes) < 10:
-        raise argparse.ArgumentTypeError("sizes are pad counts of at least 10")
-    return sizes
-
-
 def _dists(text: str) -> list[str]:
     dists = [d.strip() for d in text.split(",") if d.strip()]
     bad = [d for d in dists if d not in boards.DISTRIBUTIONS]
@@ -56,7 +46,7 @@ def build_parser() -> argparse.ArgumentParser:
                    help="boards of 100 and 1 000 pads only, 2 timed runs each")
     p.add_argument("--out", type=Path, default=ROOT / "out" / "bench", metavar="DIR",
                    help="output directory (default out/bench)")
-    p.add_argument("--sizes", type=_sizes, metavar="N,N,...",
+    p.add_argument("--sizes", type=boards.sizes_argument, metavar="N,N,...",
                    help="board sizes in pads (default 100,1000,10000,100000)")
     p.add_argument("--dists", type=_dists, default=list(boards.DISTRIBUTIONS), metavar="D,D,...",
                    help="distributions (default uniform,clustered,grid)")

@@ -37,6 +37,7 @@ pass) and 20 % 1.0 mm wide (drawn as loops).
 
 from __future__ import annotations
 
+import argparse
 import math
 import random
 from dataclasses import dataclass, field
@@ -126,6 +127,18 @@ class Board:
             lines.append(cards.l_card(x, y, width or None))
             lines += [cards.plus_card(vx, vy) for vx, vy in rest]
         return cards.deck([cards.CardPackage(self.name, lines)], job=f"BENCH {self.name}")
+
+
+def sizes_argument(text: str) -> list[int]:
+    """``--sizes``' value, pad counts separated by commas (``10_000`` too),
+    each at least 10; argparse's type, so a bad list is a usage error."""
+    try:
+        sizes = [int(s.replace("_", "")) for s in text.split(",") if s.strip()]
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"not a list of sizes: {text!r}") from None
+    if not sizes or min(sizes) < 10:
+        raise argparse.ArgumentTypeError("sizes are pad counts of at least 10")
+    return sizes
 
 
 def board_side(pads: int) -> int:

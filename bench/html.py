@@ -22,9 +22,12 @@ import argparse
 import os
 import shutil
 import subprocess
+import sys
 import tempfile
 import time
 from pathlib import Path
+
+from harness.files import quiet_when_output_closes
 
 from . import boards
 
@@ -92,20 +95,22 @@ def measure(size: int, out: Path) -> dict[str, float]:
             "run_s_x1000": run_s, "step_all_s": step_s}
 
 
+@quiet_when_output_closes
 def main(argv: list[str] | None = None) -> int:
     parser = argparse.ArgumentParser(prog="python -m bench.html", description=__doc__.split(
         "\n\n")[0])
-    parser.add_argument("--sizes", default="10000,100000",
-                        help="pad counts of the uniform boards (default 10000,100000)")
+    parser.add_argument("--sizes", type=boards.sizes_argument, default=[10000, 100000],
+                        metavar="N,N,...", help="pad counts of the uniform boards (default 10000,100000)")
     parser.add_argument("--out", type=Path, default=ROOT / "out" / "bench-html")
     args = parser.parse_args(argv)
     if shutil.which("chromedriver") is None or shutil.which("fpm") is None:
-        print("python -m bench.html: needs chromedriver and fpm on PATH (make setup)")
+        print("python -m bench.html: needs chromedriver and fpm on PATH (make setup)",
+              file=sys.stderr)
         return 2
     args.out.mkdir(parents=True, exist_ok=True)
     print("pads     page MB  write s  open s  small frames  x1000 machine s  x1000 run s  "
           "step all s")
-    for size in (int(s) for s in args.sizes.split(",")):
+    for size in args.sizes:
         r = measure(size, args.out)
         print(f"{r['pads']:<8} {r['page_mb']:7.1f}  {r['write_s']:7.2f}  {r['open_s']:6.2f}  "
               f"{r['small_frames']:12}  {r['machine_s_x1000']:15.2f}  {r['run_s_x1000']:11.2f}  "

@@ -64,6 +64,8 @@ import tempfile
 from dataclasses import dataclass
 from pathlib import Path
 
+from harness.files import quiet_when_output_closes
+
 from . import measure, tsplib
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -331,6 +333,7 @@ def build_parser() -> argparse.ArgumentParser:
     return ap
 
 
+@quiet_when_output_closes
 def main(argv: list[str] | None = None) -> int:
     args = build_parser().parse_args(argv)
     names, problem = tsplib.parse_names("--names", args.names)

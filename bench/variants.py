@@ -36,7 +36,7 @@ from collections.abc import Iterator
 from dataclasses import dataclass
 from pathlib import Path
 
-from harness.files import write_whole
+from harness.files import quiet_when_output_closes, write_whole
 
 from . import measure, tsplib
 
@@ -138,6 +138,7 @@ def build_parser() -> argparse.ArgumentParser:
     return ap
 
 
+@quiet_when_output_closes
 def main(argv: list[str] | None = None) -> int:
     args = build_parser().parse_args(argv)
     names, problem = tsplib.parse_names("--names", args.names)
@@ -160,10 +161,10 @@ def main(argv: list[str] | None = None) -> int:
         print(f"{name}: " + " ".join(f"{r.tag} {r.pct:.2f}" for r in runs[-len(TAGS):]),
               file=sys.stderr, flush=True)
     text = report(runs)
-    print(text, end="")
     args.out.mkdir(parents=True, exist_ok=True)
     write_whole(args.out / "variants.csv", write_csv(runs))
     write_whole(args.out / "variants.txt", text)
+    print(text, end="")              # after the files, which a closed output must not lose
     return 0
 
 

@@ -9,6 +9,7 @@ from __future__ import annotations
 import math
 import shutil
 import subprocess
+import sys
 import xml.etree.ElementTree as ET
 from pathlib import Path
 
@@ -243,3 +244,16 @@ def test_demo_tour_is_the_recorded_one(run_tenzor):
     stats = measure.read_tapes(out, "LOGIC-CARD-A")
     got = {k: round(v.travel_mm, 3) for k, v in stats.items()}
     assert got == DEMO_TRAVEL_MM
+
+
+@pytest.mark.parametrize("module", ["bench", "bench.html"])
+@pytest.mark.parametrize("sizes, said", [("abc", "not a list of sizes: 'abc'"),
+                                         ("100,5", "sizes are pad counts of at least 10"),
+                                         (",", "sizes are pad counts of at least 10")])
+def test_sizes_are_read_alike_by_both_benchmarks(module, sizes, said):
+    # bench.html once read --sizes itself: 'abc' ended in ValueError's
+    # traceback and 0 in an IndexError from the board generator
+    proc = subprocess.run([sys.executable, "-m", module, "--sizes", sizes, "--out", "/nonexistent"],
+                          cwd=ROOT, capture_output=True, text=True, timeout=60)
+    assert proc.returncode == 2 and proc.stdout == ""
+    assert proc.stderr.splitlines()[-1] == f"python -m {module}: error: argument --sizes: {said}"

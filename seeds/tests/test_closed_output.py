@@ -5,9 +5,11 @@ command said itself, and never a BrokenPipeError traceback or Python's
 "Exception ignored" line."""
 from __future__ import annotations
 
+import importlib
 import os
 import subprocess
 import sys
+import tomllib
 from pathlib import Path
 
 import pytest
@@ -72,3 +74,28 @@ def test_a_reader_gone_before_the_first_line(tmp_path, name) -> None:
     err = proc.stderr.decode("utf-8")
     _clean(err)
     assert proc.returncode == 2, (proc.returncode, err)
+
+
+def _entry_points() -> list[str]:
+    """The modules a user runs: those of harness/, seeds/ and bench/ with a
+    ``__main__`` block, and the console scripts pyproject.toml names."""
+    found = []
+    for package in ("harness", "seeds", "bench"):
+        for path in sorted((ROOT / package).glob("*.py")):
+            if 'if __name__ == "__main__":' in path.read_text(encoding="utf-8"):
+                found.append(f"{package}.{path.stem}")
+    scripts = tomllib.loads((ROOT / "pyproject.toml").read_text())["project"]["scripts"]
+    found += [target.split(":")[0] for target in scripts.values()]
+    return sorted(set(found))
+
+
+@pytest.mark.parametrize("module", _entry_points())
+def test_every_entry_point_stops_quietly(module) -> None:
+    # the guard is the same for all (harness.files.quiet_when_output_closes,
+    # tested above on one command of each kind): a main without it would
+    # print BrokenPipeError's traceback under `| head`
+    main = importlib.import_module(module).main
+    assert getattr(main, "__wrapped__", None) is not None, f"{module}.main is not guarded"
+    assert main.__code__ is not main.__wrapped__.__code__
+    assert main.__qualname__ == main.__wrapped__.__qualname__ == "main"
+    assert "quiet_when_output_closes" in main.__code__.co_qualname
