@@ -105,3 +105,95 @@ def test_paths_a_page_names_exist(page):
         if not (ROOT / name).exists() and not (path.parent / name).exists():
             missing.append(name)
     assert not missing, f"{page} names paths that do not exist: {missing}"
+
+
+# A section cited by its title after its page: docs/PERFORMANCE.md, "The
+# tour"; (RECONSTRUCTION.md, "Odd sizes"); [CARDS.md](CARDS.md) ("Packages"
+# and "Columns not read"), in prose or in a comment of any language.
+SECTION = re.compile(r'((?:docs/|legacy/)?[A-Za-z0-9_-]+\.md)\)?(?:,| \(|:)\s*["“]([^"”]{2,100})["”]'
+                     r'((?:\s*(?:,|and|, and)\s*["“][^"”]{2,100}["”])*)')
+COMMENT = re.compile(r"^\s*(?:[!#*>]+|C(?=\s)|//)\s?")
+
+
+def _flat(text: str) -> str:
+    """The text as one line, each line's comment marker taken off, so that a
+    title broken over two comment lines reads whole."""
+    return " ".join(" ".join(COMMENT.sub("", line) for line in text.splitlines()).split())
+
+
+def _plain(text: str) -> str:
+    return " ".join(re.sub(r"[*`]", "", text).split()).lower()
+
+
+def cited_sections(path: Path, text: str, pages: dict[str, str]) -> list[tuple[str, str]]:
+    """(page, title) for each section ``text`` (the file ``path``) cites by
+    title, of a page in ``pages`` (repository path to its text)."""
+    out = []
+    for m in SECTION.finditer(_flat(text)):
+        page = next((c for c in (m.group(1), str((path.parent / m.group(1)).relative_to(ROOT)),
+                                 "docs/" + Path(m.group(1)).name) if c in pages), None)
+        if page is not None:
+            titles = [m.group(2)] + re.findall(r'["“]([^"”]+)["”]', m.group(3))
+            out += [(page, title) for title in titles]
+    return out
+
+
+def test_every_section_cited_by_title_is_in_its_page():
+    """A title after a page's name (docs/ROBUSTNESS.md, "em703") stands in
+    that page as written: a heading, a paragraph's bold title or a rule's
+    first words renamed without its citations would leave them pointing
+    nowhere."""
+    pages = {str(p.relative_to(ROOT)): p.read_text(encoding="utf-8")
+             for p in _tracked() if p.suffix == ".md"}
+    plain = {page: _plain(_flat(text)) for page, text in pages.items()}
+    cited, missing = 0, []
+    for path in _tracked():
+        text = _text(path)
+        if text is None or path.relative_to(ROOT).parts[0] == ".ci" or path == Path(__file__):
+            continue                   # this file's citations are the pattern's examples
+        for page, title in cited_sections(path, text, pages):
+            cited += 1
+            if _plain(title) not in plain[page]:
+                missing.append(f"{path.relative_to(ROOT)}: {page}, {title!r}")
+    assert cited >= 25, cited          # the pattern still finds the project's citations
+    assert not missing, "sections cited that their pages do not have:\n" + "\n".join(missing)
+
+
+def test_the_section_pattern_reads_each_way_of_citing():
+    pages = {"docs/PERFORMANCE.md": "", "docs/CARDS.md": "", "docs/RECONSTRUCTION.md": ""}
+    here = ROOT / "harness" / "x.py"
+    for text, want in [
+        ('see docs/PERFORMANCE.md, "The tour" below', [("docs/PERFORMANCE.md", "The tour")]),
+        ('(RECONSTRUCTION.md, "Odd sizes")', [("docs/RECONSTRUCTION.md", "Odd sizes")]),
+        ('"""No silent misreads (docs/CARDS.md, "Packages" and "Columns not read").',
+         [("docs/CARDS.md", "Packages"), ("docs/CARDS.md", "Columns not read")]),
+        ('! the kicks (docs/PERFORMANCE.md, "Where TENZOR\n! spends its time")',
+         [("docs/PERFORMANCE.md", "Where TENZOR spends its time")]),
+        ('C     SEE DOCS/PERFORMANCE.MD', []),
+    ]:
+        assert cited_sections(here, text, pages) == want, text
+
+
+def _slug(heading: str) -> str:
+    """A heading's anchor as GitHub makes it."""
+    return re.sub(r"[^\w\- ]", "", heading.strip().lower()).replace(" ", "-")
+
+
+@pytest.mark.parametrize("page", sorted(
+    str(p.relative_to(ROOT)) for p in _tracked() if p.suffix == ".md"))
+def test_anchors_of_links_resolve(page):
+    """A link to a section (CARDS.md#numbers) names a heading of that page."""
+    path = ROOT / page
+    broken = []
+    for target in LINK.findall(path.read_text(encoding="utf-8")):
+        name, sep, anchor = target.partition("#")
+        if not sep or re.match(r"[a-z]+:", target):
+            continue
+        dest = path.parent / name if name else path
+        if not dest.is_file() or dest.suffix != ".md":
+            continue                    # a missing file is the test above's
+        heads = {_slug(line.lstrip("#")) for line in dest.read_text(encoding="utf-8").splitlines()
+                 if line.startswith("#")}
+        if anchor not in heads:
+            broken.append(target)
+    assert not broken, f"{page}: links to headings that do not exist: {broken}"
