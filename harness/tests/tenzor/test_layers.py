@@ -23,7 +23,8 @@ from hypothesis import strategies as st
 from harness import cards
 from harness.tests.strategies import REACH, st_package
 from harness.deck import LAYERS, CardError, Package, parse_deck
-from harness.sim import simulate
+from harness.shapes import distinct_strokes, run_shapes
+from harness.sim import simulate, stroke_frames
 
 from harness.tests.helpers import DECKS as EXAMPLES
 from harness.tests.helpers import ROOT, check_outputs
@@ -95,8 +96,11 @@ def test_generated_cards_parse_back(pkg: cards.CardPackage) -> None:
 
 
 def _m_shapes(pkg: Package, key: str) -> int:
-    """Shapes that the M frames of a tape add to its layer."""
-    return len(simulate(pkg.m_frames[key]).strokes)
+    """Shapes that the M frames of a tape add to its layer: each distinct
+    stroke once (two M cards that draw the same dot add one shape)."""
+    frames = pkg.m_frames[key]
+    shapes = run_shapes(simulate(frames), pkg.layers[key].tool)
+    return len(distinct_strokes(shapes, stroke_frames(frames))[0])
 
 
 def test_card_fields_are_fortran_fields() -> None:
