@@ -9,7 +9,7 @@ import pytest
 from hypothesis import given
 from hypothesis import strategies as st
 
-from harness.sim import Arc, Dot, Line, simulate, unroll
+from harness.sim import MAX_EXECUTED, Arc, Dot, Line, arc_sweep, simulate, unroll
 from harness.tape import Frame
 
 
@@ -104,6 +104,32 @@ def test_cycle_then_continues_after_the_pair() -> None:
 def test_invalid_frames_raise(frames: list[Frame]) -> None:
     with pytest.raises(ValueError):
         simulate(frames)
+
+
+def test_the_executed_frame_limit_is_inclusive() -> None:
+    """At most MAX_EXECUTED frames run: a pair cycled to exactly that many
+    is taken, one frame more is refused before anything runs."""
+    assert MAX_EXECUTED == 10**6
+    pair = [Frame(dx=1, cyc=500_000, k=10), Frame(dx=-1, k=10)]
+    assert next(unroll(pair)) == pair[0]
+    over = pair + [Frame(k=20)]                     # one frame more
+    with pytest.raises(ValueError, match=r"^more than 1000000 executed frames$"):
+        next(unroll(over))
+
+
+def test_an_arc_ending_on_its_start_ray_is_a_full_turn() -> None:
+    """X5 DX1: the end (6, 0) from the centre lies in the start direction,
+    1 unit out (within the arc tolerance): the arc goes all the way round,
+    in its own direction, not nowhere."""
+    assert arc_sweep(5, 0, 6, 0, clockwise=False) == 2 * math.pi
+    assert arc_sweep(5, 0, 6, 0, clockwise=True) == -2 * math.pi
+    for k, sweep in ((11, 2 * math.pi), (13, -2 * math.pi)):
+        run = simulate([Frame(x=5, dx=1, k=k)])
+        (arc,) = run.strokes
+        assert isinstance(arc, Arc)
+        assert (arc.cx, arc.cy, arc.r, arc.sweep) == (-5, 0, 5, sweep)
+        assert (arc.x1, arc.y1) == run.end == (1, 0)
+        assert run.drawn_mm == pytest.approx(2 * math.pi * 5 / 100)
 
 
 def test_dot_lowers_the_tool_where_it_stands() -> None:
