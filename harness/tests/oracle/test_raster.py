@@ -121,6 +121,17 @@ def test_tolerance_of_tool_width() -> None:
     assert compare(run, TOOL - 14, ideal).holes > 0
 
 
+def test_the_finest_tolerance_is_checked_at_half_its_pitch() -> None:
+    """verify takes 0.02 mm: no pitch of PITCHES is below it, so the check
+    runs at 0.01 mm, and a tool 0.04 mm too wide is excess there."""
+    ideal = [Stroke(((0, 0), (3000, 0)), TOOL / 2)]
+    run = simulate([Frame(dx=3000, k=10)])
+    report = compare(run, TOOL, ideal, tol=2)
+    assert report.ok and report.pitch_mm == 0.01 and report.tol_mm == 0.02, report.summary()
+    assert compare(run, TOOL + 8, ideal, tol=2).excess > 0
+    assert compare(run, TOOL + 8, ideal, tol=5).ok
+
+
 def test_empty_tape_against_empty_layer() -> None:
     report = compare(simulate([]), TOOL, Layer(TOOL))
     assert report.ok and report.pixels == 0
