@@ -43,3 +43,19 @@ def test_a_byte_that_is_not_printable_is_named_by_its_column(byte: str, column: 
     with pytest.raises(CardError) as err:
         parse_deck(_deck(card))
     assert str(err.value) == f"card 6: column {column}: byte {byte!r}"
+
+
+def test_the_start_point_may_lie_on_the_far_edges_of_the_field() -> None:
+    """X0 and Y0 run from 0 to 1200.00 mm inclusive (docs/CARDS.md; TENZOR
+    takes 1200.00 and refuses 1200.01 alike)."""
+    def p_card(x0: str, y0: str) -> str:
+        return "P" + " " * 9 + x0.rjust(10) + y0.rjust(10)
+
+    for x0, y0, start in (("1200.00", "0.00", (120_000, 0)), ("0.00", "1200.00", (0, 120_000)),
+                          ("1200.00", "1200.00", (120_000, 120_000))):
+        pkg, = parse_deck(f"T\n{p_card(x0, y0)}\nE\n")
+        assert pkg.start == start
+    for x0, y0 in (("1200.01", "0.00"), ("0.00", "1200.01"), ("-0.01", "0.00"), ("0.00", "-0.01")):
+        with pytest.raises(CardError) as err:
+            parse_deck(f"T\n{p_card(x0, y0)}\nE\n")
+        assert str(err.value) == "card 2: the start point X0, Y0 is off the 1200 x 1200 mm field"
