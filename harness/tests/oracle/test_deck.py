@@ -59,3 +59,14 @@ def test_the_start_point_may_lie_on_the_far_edges_of_the_field() -> None:
         with pytest.raises(CardError) as err:
             parse_deck(f"T\n{p_card(x0, y0)}\nE\n")
         assert str(err.value) == "card 2: the start point X0, Y0 is off the 1200 x 1200 mm field"
+
+
+def test_a_card_has_at_most_80_columns() -> None:
+    """Columns 73-80 (the sequence field) are not read, column 81 does not
+    exist: a line of 81 is refused at its card, as TENZOR refuses it."""
+    pad = "D              30.00      4.00    2.00"
+    pkg, = parse_deck(_deck(pad.ljust(72) + "SEQ00001"))
+    assert [(p.x, p.y, p.w) for p in pkg.pads] == [(3000, 400, 200)]
+    with pytest.raises(CardError) as err:
+        parse_deck(_deck(pad.ljust(72) + "SEQ000001"))
+    assert str(err.value) == "card 6: longer than 80 columns (81)"
