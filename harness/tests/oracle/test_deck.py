@@ -2,6 +2,8 @@
 of a field, a card shorter than the field, a byte that is not printable."""
 from __future__ import annotations
 
+import math
+
 import pytest
 
 from harness.deck import CardError, parse_deck
@@ -70,3 +72,19 @@ def test_a_card_has_at_most_80_columns() -> None:
     with pytest.raises(CardError) as err:
         parse_deck(_deck(pad.ljust(72) + "SEQ000001"))
     assert str(err.value) == "card 6: longer than 80 columns (81)"
+
+
+def test_circles_and_arcs_turn_in_their_cards_direction() -> None:
+    """+ is clockwise (a negative sweep), - counter-clockwise, for the full
+    circle of an O card as for the arc of an A card."""
+    o = "O{}        " + "     10.00" + "     20.00" + "      3.00"
+    a = "A{}        " + "     10.00" + "     20.00" + "     13.00" + "     20.00" \
+        + "     10.00" + "     23.00"
+    pkg, = parse_deck(_deck(o.format("+"), o.format("-"), a.format("+"), a.format("-")))
+    circle_cw, circle_ccw, arc_cw, arc_ccw = pkg.layers["cond"].shapes
+    assert (circle_cw.cx, circle_cw.cy, circle_cw.rad, circle_cw.hw) == (1000, 2000, 300, 25)
+    assert (circle_cw.sweep, circle_ccw.sweep) == (-2 * math.pi, 2 * math.pi)
+    assert (arc_cw.a0, arc_ccw.a0) == (0.0, 0.0)
+    assert arc_cw.sweep == pytest.approx(-1.5 * math.pi)
+    assert arc_ccw.sweep == pytest.approx(0.5 * math.pi)
+    assert [o.card for o in pkg.layers["cond"].origins] == [6, 7, 8, 9]
