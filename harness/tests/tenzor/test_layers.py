@@ -123,6 +123,18 @@ def test_card_fields_are_fortran_fields() -> None:
             parse_deck(bad)
 
 
+def test_a_name_card_is_columns_1_to_18() -> None:
+    """The writer puts a name of at most 18 characters in columns 1-18, where
+    the reader finds it; a 19th would be column 19, which must be blank."""
+    assert cards.name_card("N" * 18) == "N" * 18
+    with pytest.raises(ValueError, match="bad package name 'NNNNNNNNNNNNNNNNNNN'"):
+        cards.name_card("N" * 19)
+    (pkg,) = parse_deck(cards.deck([cards.CardPackage("N" * 18, [])]))
+    assert pkg.name == "N" * 18
+    with pytest.raises(CardError, match="card 4: columns 19-72 must be blank"):
+        parse_deck(cards.deck([cards.CardPackage("N" * 18, [])]).replace("N" * 18, "N" * 19))
+
+
 @pytest.mark.parametrize("arc, col, words", [
     (("+", 1000, 1000, 1000, 1000, 1500, 1000), 31, "start of the arc is its centre"),
     (("+", 1000, 1000, 1001, 1000, 1000, 1000), 51, "end of the arc is its centre"),
