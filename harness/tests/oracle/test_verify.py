@@ -260,6 +260,39 @@ def test_another_implementations_tape_passes(tmp_path: Path) -> None:
     assert "drawn too small" in v.text()
 
 
+#: A round 1.60 mm pad at (10, 10) mm (card 3) and its tape drawn from the
+#: outside in with the 0.40 mm tool, as in the test above.
+ONE_FRAMES = [Frame(dx=1060, dy=1000, k=20), Frame(x=60, k=13), Frame(dx=-20, k=10),
+              Frame(x=40, k=13), Frame(dx=-20, k=10), Frame(x=20, k=13),
+              Frame(dx=-1020, dy=-1000, k=20)]
+
+
+def one_pad(tmp_path: Path, small: list[Frame], scale: tuple[int, int] | None = None,
+            pad: tuple[int, int, int] = (1000, 1000, 160)) -> verify.Verdict:
+    """verify of a one-pad deck (start point at 50, 50 mm) against the given
+    small-pad tape and empty large-pad and conductor tapes."""
+    deck = cards.deck([cards.CardPackage("ONE", [cards.p_card(5000, 5000, 40, scale=scale),
+                                                 cards.d_card(*pad)])], envelope=False)
+    here = tmp_path / f"v{len(list(tmp_path.iterdir()))}"
+    here.mkdir()
+    (here / "ONE-small.ptp").write_bytes(tape.encode(small))
+    for layer in ("large", "cond"):
+        (here / f"ONE-{layer}.ptp").write_bytes(tape.encode([]))
+    return verify.verify(deck, here)
+
+
+def test_a_tape_that_ends_at_its_start_point_with_the_tool_down_fails(tmp_path) -> None:
+    """The start point's own pad, 0.40 mm, drawn by one dot of the 0.40 mm
+    tool: the drawing is right, but the tape must end raised."""
+    at_start = (0, 0, 40)
+    v = one_pad(tmp_path, [Frame(k=10)], pad=at_start)
+    assert [r.kind for r in v.reasons] == ["not-at-start"], v.text()
+    assert v.reasons[0].message == ("does not end raised at its start point: it ends at "
+                                    "(0.00, 0.00) mm from it with the tool down")
+    v = one_pad(tmp_path, [Frame(k=10), Frame(k=20)], pad=at_start)
+    assert v.passed, v.text()
+
+
 def test_controlled_code_is_detected(run_tenzor) -> None:
     deck = board_deck("K")
     proc, out = run_tenzor(deck)
