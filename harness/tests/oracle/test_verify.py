@@ -293,6 +293,20 @@ def test_a_tape_that_ends_at_its_start_point_with_the_tool_down_fails(tmp_path) 
     assert v.passed, v.text()
 
 
+@pytest.mark.parametrize("scale, stray", [(None, 4000), ((1, 2), 9000)])
+def test_a_stray_dot_far_from_the_deck_but_on_the_field_is_found(tmp_path, scale,
+                                                                  stray) -> None:
+    """The start point is 50 mm from the field's left edge: a dot drawn 40 mm
+    left of it (90 mm at scale 1:2, 45 mm on the field) is on the field, far
+    from the deck's only pad, and is excess, named by its frame."""
+    assert one_pad(tmp_path, ONE_FRAMES, scale).passed
+    frames = [Frame(dx=-stray, dy=1000, k=20), Frame(k=10), Frame(dx=stray, dy=-1000, k=20),
+              *ONE_FRAMES]
+    v = one_pad(tmp_path, frames, scale)
+    assert [(r.kind, r.frame) for r in v.reasons] == [("excess", 2)], v.text()
+    assert f"farthest at (-{stray // 100 + 0.2:.2f}, " in v.reasons[0].message
+
+
 def test_controlled_code_is_detected(run_tenzor) -> None:
     deck = board_deck("K")
     proc, out = run_tenzor(deck)
