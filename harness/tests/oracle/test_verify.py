@@ -307,6 +307,17 @@ def test_a_stray_dot_far_from_the_deck_but_on_the_field_is_found(tmp_path, scale
     assert f"farthest at (-{stray // 100 + 0.2:.2f}, " in v.reasons[0].message
 
 
+def test_stray_frames_beyond_the_listed_ones_are_counted(tmp_path) -> None:
+    """17 stray dots: 15 are listed, the other 2 counted in the verdict."""
+    frames = [Frame(dy=3000, k=20)] + [Frame(k=10), Frame(dx=100, k=20)] * 17 \
+        + [Frame(dx=-1700, dy=-3000, k=20)] + ONE_FRAMES
+    v = one_pad(tmp_path, frames)
+    assert [(r.kind, r.frame) for r in v.reasons] == [("excess", 2 + 2 * i) for i in range(15)]
+    assert v.count == 17 and not v.passed
+    assert "       ... and 2 more reasons like these\n" in v.text()
+    assert v.text().endswith("FAIL: 17 reasons\n")
+
+
 def test_controlled_code_is_detected(run_tenzor) -> None:
     deck = board_deck("K")
     proc, out = run_tenzor(deck)
