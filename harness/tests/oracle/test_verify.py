@@ -473,6 +473,34 @@ def test_start_point_moved_on_the_deck_leaves_the_field(board) -> None:
     assert all(r.frame and r.row for r in v.reasons)
 
 
+def test_field_exit_names_the_first_frame_that_leaves() -> None:
+    """The tool centre may reach the field's edges, 0 and 1200.00 mm, not
+    0.01 mm beyond; every repetition of a cycle, the way an arc turns and
+    the scale (a board length v is N*v/D on the field) count."""
+    F = 120_000
+
+    def leave(frames: list[Frame], start: tuple[int, int], scale: tuple[int, int] = (1, 1)):
+        return verify.field_exit(frames, start, scale)
+
+    assert leave([Frame(dx=F, dy=F, k=20), Frame(dx=-F, dy=-F, k=20)], (0, 0)) is None
+    assert leave([Frame(dx=F + 1, k=20)], (0, 0)) == (0, 0, "x = 1200.01 mm")
+    assert leave([Frame(dy=F, k=10), Frame(dy=1, k=10)], (0, 0)) == (1, 0, "y = 1200.01 mm")
+    assert leave([Frame(dx=-1, k=20)], (0, 0)) == (0, 0, "x = -0.01 mm")
+    # the third and last repetition of a cycle goes 0.01 mm too far
+    saw = [Frame(dx=1000, cyc=3, k=20), Frame(k=20)]
+    assert leave(saw, (F - 3000, 0)) is None
+    assert leave(saw, (F - 2999, 0)) == (0, 3, "x = 1200.01 mm")
+    # a half circle from the right of its centre: clockwise through the bottom
+    assert leave([Frame(x=1000, dx=-2000, k=13)], (F // 2, 999)) == (0, 0, "y = -0.01 mm")
+    assert leave([Frame(x=1000, dx=-2000, k=11)], (F // 2, 999)) is None
+    assert leave([Frame(x=1000, dx=-2000, k=11)], (F // 2, F - 999)) == (0, 0, "y = 1200.01 mm")
+    # 60 mm left of a start point 50 mm from the edge: 30 mm at 1:2, 120 mm at 2:1
+    out_and_back = [Frame(dx=-6000, k=20), Frame(dx=6000, k=20)]
+    assert leave(out_and_back, (5000, 0), (1, 2)) is None
+    assert leave(out_and_back, (5000, 0), (2, 1)) == (0, 0, "x = -70.00 mm")
+    assert leave(out_and_back, (5000, 0), (1, 1)) == (0, 0, "x = -10.00 mm")
+
+
 def test_corrupt_row_is_a_code_error_with_its_row(board, tmp_path) -> None:
     out = tmp_path / "tapes"
     shutil.copytree(board, out)
