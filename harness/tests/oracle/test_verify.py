@@ -501,6 +501,15 @@ def test_field_exit_names_the_first_frame_that_leaves() -> None:
     assert leave(out_and_back, (5000, 0), (1, 1)) == (0, 0, "x = -10.00 mm")
 
 
+def test_frame_start_rows_without_the_decoders_starts() -> None:
+    """A tape whose frame starts were not noted: counted from its leader."""
+    frames = [Frame(dx=3, k=10), Frame(dx=-3, k=20)]       # 6 rows each
+    data = tape.encode(frames, "8", leader=3)
+    t = tape.decode(data)
+    assert t.starts == [5, 11]
+    assert verify.frame_start_rows(data, replace(t, starts=None)) == [5, 11]
+
+
 def test_corrupt_row_is_a_code_error_with_its_row(board, tmp_path) -> None:
     out = tmp_path / "tapes"
     shutil.copytree(board, out)
