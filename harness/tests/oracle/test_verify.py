@@ -566,6 +566,10 @@ def test_command_exit_status_and_deterministic_output(board, tmp_path, capsys) -
     (["verify", "{deck}", ".", "--tolerance", "0.001"], "--tolerance must be whole 0.01 mm"),
     (["verify", "{deck}", ".", "--tolerance", "1e9"], "--tolerance must be whole 0.01 mm, 0.02 "
                                                      "to 10.00 mm, not 1e9"),
+    (["verify", "{deck}", ".", "--tolerance", "0.01"], "--tolerance must be whole 0.01 mm, 0.02 "
+                                                      "to 10.00 mm, not 0.01"),
+    (["verify", "{deck}", ".", "--tolerance", "10.01"], "--tolerance must be whole 0.01 mm, 0.02 "
+                                                       "to 10.00 mm, not 10.01"),
     (["verify", "{deck}"], "usage:"),
 ])
 def test_command_usage_and_io_errors_exit_2(tmp_path, capsys, args, fragment) -> None:
@@ -576,6 +580,16 @@ def test_command_usage_and_io_errors_exit_2(tmp_path, capsys, args, fragment) ->
                      noend=tmp_path / "noend.crd") for a in args]
     assert main(argv) == 2
     assert fragment in capsys.readouterr().err
+
+
+@pytest.mark.parametrize("mm", ["0.02", "10.00"])
+def test_the_tolerance_may_be_its_least_or_its_greatest(board, tmp_path, capsys, mm) -> None:
+    deck = tmp_path / "board.crd"
+    deck.write_text(BOARD)
+    assert main(["verify", str(deck), str(board), "--tolerance", mm]) == 0
+    out = capsys.readouterr().out
+    assert out.startswith(f"verify {deck} against {board} (tolerance {mm} mm)\n")
+    assert out.endswith("\nPASS\n")
 
 
 def test_python_dash_m_harness_verify(board, tmp_path) -> None:
