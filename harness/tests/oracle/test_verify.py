@@ -592,6 +592,16 @@ def test_the_tolerance_may_be_its_least_or_its_greatest(board, tmp_path, capsys,
     assert out.endswith("\nPASS\n")
 
 
+def test_two_packages_naming_the_same_files_are_refused(tmp_path) -> None:
+    """'A_B' and 'A B' both punch A_B-small.ptp ...: no verdict."""
+    deck = cards.deck([cards.CardPackage("A_B", []), cards.CardPackage("A B", [])],
+                      envelope=False)
+    with pytest.raises(verify.VerifyError) as info:
+        verify.verify(deck, tmp_path, deck_name="two.crd")
+    assert str(info.value) == ("two.crd: card 3: package name 'A B' names the same files "
+                               "as card 1")
+
+
 def test_python_dash_m_harness_verify(board, tmp_path) -> None:
     deck = tmp_path / "board.crd"
     deck.write_text(BOARD)
