@@ -402,3 +402,20 @@ def test_chords_stay_within_the_tolerance_on_random_tapes(em703_exe, tmp_path_fa
     tape.write_bytes(encode(frames))
     text = run(em703_exe, "gcode", "--chords", str(tol), tape, check=0).stdout.decode()
     _check_chords(text, frames, tol, "random tape")
+
+
+# ---------------------------------------------------------------------------
+# Block numbers: N1, N2, ... and after N99999 again from N1.
+# ---------------------------------------------------------------------------
+def test_block_numbers_start_again_at_n1_after_n99999(em703_exe, tmp_path) -> None:
+    # a cycle pair run 50000 times draws 100000 lines: with the two blocks of
+    # the heading, the tool lowered, raised and M02, 100005 blocks
+    tape = tmp_path / "long.ptp"
+    tape.write_bytes(encode([Frame(dx=1, k=10, cyc=50000), Frame(dx=-1, k=10)]))
+    lines = run(em703_exe, "gcode", tape, check=0).stdout.decode().splitlines()
+    numbers = [int(line[1:].split(" ", 1)[0]) for line in lines if line.startswith("N")]
+    assert numbers == [*range(1, 100000), *range(1, 7)]
+    wrap = lines.index("N99999 G01 X0.000 Y0.000")
+    assert lines[wrap - 1:wrap + 2] == ["N99998 G01 X0.010 Y0.000", "N99999 G01 X0.000 Y0.000",
+                                        "N1 G01 X0.010 Y0.000"]
+    assert lines[-4:] == ["N4 G01 X0.000 Y0.000", "N5 M05", "N6 M02", "%"]
