@@ -200,3 +200,19 @@ def test_an_arc_one_unit_off_its_circle_gets_a_centre_grbl_takes(em703_exe, tmp_
     grbl = run(em703_exe, "gcode", "--dialect", "grbl", path, check=0).stdout.decode()
     assert grbl_errors(grbl) == []
     assert "G02 X-0.500 Y-0.490" in grbl
+
+
+def test_an_arc_half_a_unit_off_its_circle_gets_a_centre_grbl_takes(em703_exe, tmp_path) -> None:
+    """X300 DX-88 DY213 K11: the end (2.12, 2.13) mm from the centre lies
+    0.0052 mm outside the 3 mm circle, less than a unit but more than both
+    of GRBL's limits (0.005 mm, and 0.1 % of the radius, 0.003 mm): GRBL
+    would refuse the tape's centre (error:33), so it moves onto the bisector."""
+    from harness.tape import Frame
+    path = tmp_path / "half.ptp"
+    path.write_bytes(encode([Frame(x=300, dx=-88, dy=213, k=11), Frame(k=20)]))
+    linuxcnc = run(em703_exe, "gcode", path, check=0).stdout.decode()
+    assert "N4 G03 X-0.880 Y2.130 I-3.000 J0.000 F1500\n" in linuxcnc
+    assert "error:33" in " ".join(grbl_errors(linuxcnc.replace("%\n", "")))
+    grbl = run(em703_exe, "gcode", "--dialect", "grbl", path, check=0).stdout.decode()
+    assert grbl_errors(grbl) == []
+    assert "N4 G03 X-0.880 Y2.130 I-3.003 J0.006 F1500\n" in grbl
