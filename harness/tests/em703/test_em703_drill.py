@@ -20,9 +20,9 @@ import pytest
 
 from harness.deck import parse_deck
 from harness.sim import Dot, simulate
-from harness.tape import decode
+from harness.tape import Frame, decode, encode
 
-from harness.tests.helpers import keys, run
+from harness.tests.helpers import keys, run, write_job
 
 GERBV = shutil.which("gerbv")
 
@@ -166,3 +166,29 @@ def test_bad_input_to_drill(em703_exe, examples, tmp_path) -> None:
     assert missing.stderr.count(b"\n") == 1
     usage = run(em703_exe, "drill", check=2)
     assert b"missing JOB" in usage.stderr
+
+
+@pytest.mark.parametrize("gap, hits", [
+    # the boxes 0..1 mm and 1.5..2.5 mm, widened by half the 0.5 mm tool,
+    # touch at 1.25 mm: two pads, two holes of the shorter side plus the tool
+    (150, ["X0.500Y0.500", "X2.000Y0.500"]),
+    # 0.01 mm nearer they overlap: one pad, 0..2.49 mm, one hole at its centre
+    (149, ["X1.245Y0.500"]),
+])
+def test_pads_of_strokes_that_only_touch_are_two_holes(em703_exe, tmp_path, gap, hits) -> None:
+    square = [Frame(dx=100, k=10), Frame(dy=100, k=10), Frame(dx=-100, k=10),
+              Frame(dy=-100, k=10)]
+    frames = square + [Frame(dx=gap, k=20)] + square + [Frame(dx=-gap, k=20)]
+    job = write_job(tmp_path, "touch", {"small": encode(frames)}, {})
+    text = run(em703_exe, "drill", job, check=0).stdout.decode()
+    assert text.splitlines()[4:] == ["T01C1.500", "%", "G90", "G05", "T01", *hits, "M30"]
+
+
+def test_holes_at_and_left_of_the_start_point(em703_exe, tmp_path) -> None:
+    """Dots (holes of the tool's 0.5 mm) at the start point and at (-1.5,
+    -0.05) mm: the centres in mm with their signs, and no "-0.000"."""
+    frames = [Frame(k=10), Frame(dx=-150, dy=-5, k=20), Frame(k=10), Frame(dx=150, dy=5, k=20)]
+    job = write_job(tmp_path, "dots", {"large": encode(frames)}, {})
+    text = run(em703_exe, "drill", job, check=0).stdout.decode()
+    assert text.splitlines()[4:] == ["T01C0.500", "%", "G90", "G05", "T01", "X0.000Y0.000",
+                                     "X-1.500Y-0.050", "M30"]
