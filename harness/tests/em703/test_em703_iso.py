@@ -90,6 +90,21 @@ def test_long_program_is_cut_into_complete_programs(em703_exe, example_jobs) -> 
         assert downs == 0                                        # every program ends raised
 
 
+def test_each_program_of_a_cut_writes_its_feed_again(em703_exe, tmp_path) -> None:
+    """DX1 CYC300 K20 KK DX1 K10 KK: raise, travel, lower, draw, 300 times;
+    block 998 would be a travel, so the cut comes with the tool raised, and
+    the next program's first feed block (the tool lowered) writes F76 again:
+    each program starts from nothing in force."""
+    from harness.tape import Frame, encode
+    tape = tmp_path / "cut.ptp"
+    tape.write_bytes(encode([Frame(dx=1, k=20, cyc=300), Frame(dx=1, k=10)]))
+    progs = iso_programs(_em(em703_exe, "gcode", "--dialect", "iso-1970s", tape).stdout.decode())
+    assert [len(p) for p in progs] == [998, 206]
+    assert progs[0][-2:] == ["N997 G00 Z+001000", "N998 M02"]
+    assert progs[1][:4] == ["N001 G17", "N002 G00 X+000010 Y+000000", "N003 G01 Z-001000 F76",
+                            "N004 G01 X+000010 Y+000000"]
+
+
 def test_the_feed_codes_of_the_geometric_series() -> None:
     """1.12**76 = 5503 (the lines' 5500 mm/min), 1.12**65 = 1582 (arcs' 1500:
     64.53 on the scale, nearest 65); 1.12**99 = 74573, the document's
@@ -113,6 +128,14 @@ def test_check_finds_codes_of_one_group(em703_exe, tmp_path) -> None:
         "M06 M38 M39 M40)",
         f"{prog}: block N006 (line 7): the word X+1 is not a sign and six digits"]
     # the document's own example block, G02 G17 G45 G61 G83, is one of each group
+
+
+def test_check_finds_a_comment_that_is_not_closed(em703_exe, tmp_path) -> None:
+    prog = tmp_path / "open.iso"
+    prog.write_text("%\n(a comment\nN001 G17\nN002 M02\n%\n(closed)\n")
+    proc = _em(em703_exe, "check", prog)
+    assert (proc.returncode, proc.stdout) == (1, b"")
+    assert proc.stderr.decode() == f"{prog}: line 2: a comment must end with )\n"
 
 
 def test_check_of_a_tape_with_a_parity_error(em703_exe, tmp_path) -> None:
