@@ -220,6 +220,16 @@ def test_gerber_form_and_apertures(em703_exe, example_jobs, tmp_path) -> None:
         assert out.read_text() == first
 
 
+def test_a_job_name_cannot_end_a_gerber_word(em703_exe, tmp_path) -> None:
+    """* ends a Gerber word and % a command: in the title's G04 comment
+    they become _, so the comment stays one word."""
+    job = write_job(tmp_path, "STAR", {}, {})
+    job.write_text(job.read_text().replace("name = STAR", "name = CARD *1* 50%"))
+    lines = run(em703_exe, "gerber", job, check=0).stdout.decode().splitlines()
+    assert lines[0] == "G04 EM-703 job CARD _1_ 50_, code 8*"
+    assert lines[2:5] == ["%FSLAX66Y66*%", "%MOMM*%", "%LPD*%"]
+
+
 @pytest.mark.parametrize("dx, status", [(99_999_999, 0), (100_000_000, 1)])
 def test_the_gerber_format_holds_up_to_its_last_digit(em703_exe, tmp_path, dx, status) -> None:
     """Format 6.6 holds 999 999.999999 mm: a line to 999 999.99 mm is
