@@ -130,6 +130,9 @@ LEAD = [0, 0, GM]
     (LEAD + [X, 3, 0, 0, DX, MINUS, 3, 0, 0, DY, MINUS, 3, 1, 0, K, 1, 3, KK, GM], "auto", 8,
      "not on the circle"),
     (LEAD + [DX, 5, CYC, 2, K, 1, 0, KK, GM], "auto", 6, "CYC needs a following frame"),
+    # a zero before a digit, the tape's last row, or the zero the last row itself
+    (LEAD + [DX, 0, 5], "auto", 5, "leading zero in DX (a number is punched from its first"),
+    (LEAD + [DX, 0], "auto", 5, "DX is 0: a zero value is never punched"),
 ])
 def test_each_error_names_its_row(em703_exe, tmp_path, rows, code, row, words) -> None:
     path = tmp_path / "bad.ptp"
