@@ -207,9 +207,37 @@ def test_view_names_the_row_of_a_tape_that_is_not_em703s(em703_exe, example_tape
     assert not proc.stderr and len(proc.stdout.decode().splitlines()) == len(data) + 3
 
 
+def test_view_names_digit_rows_in_the_variant_of_the_tape(em703_exe, tmp_path) -> None:
+    """DX35 K10 KK DX-35 K20 KK in code 8 (digits 3 and 5 are rows 03, 05).
+    A K row 25 (digit 5 with track 5) inside the GM makes the tape K: its 25
+    is digit 5, and a 03 or 05 a digit without its track 5; before the
+    opening GM it tells nothing, and is named digit 5 of code K."""
+    from harness.tape import Frame, encode
+    data = bytearray(encode([Frame(dx=35, k=10), Frame(dx=-35, k=20)], "8"))
+    tape = tmp_path / "t.ptp"
+
+    def meanings() -> dict[int, str]:
+        tape.write_bytes(bytes(data))
+        lines = run(em703_exe, "view", tape, check=0).stdout.decode().splitlines()[2:-1]
+        return {n: line.rsplit("| ", 1)[1][6:] for n, line in enumerate(lines, 1)}
+
+    assert [meanings()[n] for n in (23, 24, 31, 32)] == ["digit 3", "digit 5", "digit 3",
+                                                         "digit 5"]
+    data[0] = 0o25
+    got = meanings()
+    assert [got[n] for n in (1, 2, 23, 24)] == ["digit 5 of code K", "leader", "digit 3",
+                                                "digit 5"]
+    data[0], data[23] = 0, 0o25
+    got = meanings()
+    assert [got[n] for n in (23, 24, 31, 32)] == [
+        "parity error (digit 3 without track 5)", "digit 5",
+        "parity error (digit 3 without track 5)", "parity error (digit 5 without track 5)"]
+
+
 @pytest.mark.parametrize("text, line, column, code", [
     ("G01 X1\nG00 #1=2\n", 2, 5, "eia"),
     ("G01 X1\r\nG00 X2 Y3 ;\n", 2, 11, "eia"),
+    ("G01\rX1 ;\n", 1, 8, "eia"),            # a CR inside a line is dropped, but is a column
     ("G01\nX\u00e9\n", 2, 2, "iso"),
     ("G01\x07\n", 1, 4, "iso"),
 ])
@@ -221,6 +249,22 @@ def test_a_character_outside_the_code_names_its_line_and_column(em703_exe, tmp_p
     err = proc.stderr.decode()
     assert err.startswith(f"{src}: line {line}, column {column}: ") and err.count("\n") == 1, err
     assert not (tmp_path / f"p.{code}.ptp").exists()
+
+
+def test_the_tape_is_named_after_the_file_with_its_extension_replaced(em703_exe,
+                                                                     tmp_path) -> None:
+    """prog.ngc -> prog.iso.ptp; a name without an extension keeps it whole:
+    a dot in a directory's name, or a dot file's leading dot, is none."""
+    (tmp_path / "a.b").mkdir()
+    for name, tape in (("prog.ngc", "prog.iso.ptp"), ("noext", "noext.iso.ptp"),
+                       ("a.b/prog", "a.b/prog.iso.ptp"), (".hidden", ".hidden.iso.ptp"),
+                       ("a.b/.hidden", "a.b/.hidden.iso.ptp")):
+        (tmp_path / name).write_text("N1 G00\n")
+        run(em703_exe, "punch", "--code", "iso", tmp_path / name, check=0)
+        assert (tmp_path / tape).read_bytes() == bytes(LEADER) + bytes(
+            iso(c) for c in "N1 G00\n") + bytes(LEADER), name
+    assert sorted(p.name for p in tmp_path.rglob("*.ptp")) == [
+        ".hidden.iso.ptp", ".hidden.iso.ptp", "noext.iso.ptp", "prog.iso.ptp", "prog.iso.ptp"]
 
 
 @pytest.mark.parametrize("code, chars", [
