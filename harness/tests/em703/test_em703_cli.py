@@ -295,6 +295,46 @@ def test_view_rows_after_the_tape_are_refused(em703_exe, example_tapes) -> None:
     assert f"{n:>5} " in last or f" {n} " in last, last
 
 
+
+def test_view_of_an_empty_tape_is_an_empty_picture(em703_exe, tmp_path) -> None:
+    """Rows 1 to the end of a tape of no rows: the heading and the two
+    borders; a --rows from row 2 on begins after its last row, 0."""
+    empty = tmp_path / "empty.ptp"
+    empty.write_bytes(b"")
+    assert run(em703_exe, "view", empty, check=0).stdout.decode() == (
+        "  row  5 4 3   2 1   code  meaning\n      +---------------+\n"
+        "      +---------------+\n")
+    line = one_line(run(em703_exe, "view", empty, "--rows", "2:3", check=2))
+    assert line == (f"{empty}: --rows 2:3 begins after the tape's last row, 0 (rows are "
+                    "numbered from 1)")
+
+
+@pytest.mark.parametrize("args, line", [
+    # the ends of each option's range are in it
+    (["sim", "--start", "1200,1200"], "start_y_mm = 1200.00"),
+    (["sim", "--start", "0,1200.00", "--tool", "20", "--svg", "SVG"], "start_x_mm = 0.00"),
+    (["gcode", "--chords", "0.001"], "(arcs as chords within 0.0010 mm)"),
+    (["gcode", "--chords", "100"], "(arcs as chords within 100.0000 mm)"),
+    # and a step beyond them is not
+    (["sim", "--start", "1200,1200.01"], "--start takes X,Y in mm on the field (0 to 1200"),
+    (["sim", "--tool", "20.01"], "--tool takes the tool width in mm (0.01 to 20.00)"),
+    (["gcode", "--chords", "0.0009"], "--chords takes the tolerance in mm (0.001 to 100)"),
+    (["gcode", "--chords", "100.0001"], "--chords takes the tolerance in mm (0.001 to 100)"),
+])
+def test_option_ranges_take_their_ends(em703_exe, tmp_path, args, line) -> None:
+    tape, svg = tmp_path / "still.ptp", tmp_path / "t.svg"
+    tape.write_bytes(encode([Frame(k=20)]))
+    proc = run(em703_exe, args[0], tape, *[str(svg) if a == "SVG" else a for a in args[1:]])
+    if line.startswith("--"):
+        assert proc.returncode == 2 and line in one_line(proc), proc.stderr
+    else:
+        assert proc.returncode == 0, proc.stderr
+        assert line in proc.stdout.decode().splitlines()
+        if "SVG" in args:
+            assert 'id="tool-down" fill="none" stroke="#1a1a1a" stroke-width="20.00"' in \
+                svg.read_text()
+
+
 def test_split_takes_a_negative_move(em703_exe) -> None:
     assert run(em703_exe, "split", "-5", "5", check=0).stdout == b"-5 5\n"
 
@@ -319,6 +359,31 @@ def test_a_job_sheet_off_the_machine_is_refused(em703_exe, example_jobs, tmp_pat
     for sub in ("svg", "gcode", "gerber", "drill", "html"):
         line = one_line(run(em703_exe, sub, bad, check=1))
         assert line.startswith(f"{bad}: line {number}: {words}"), line
+
+
+@pytest.mark.parametrize("x, y, status", [("1200.00", "0.00", 0), ("0", "1200", 0),
+                                          ("1200.01", "0.00", 1), ("0.00", "1200.01", 1)])
+def test_a_start_point_on_the_edge_of_the_field_is_on_it(em703_exe, tmp_path, x, y,
+                                                         status) -> None:
+    job = write_job(tmp_path, "edge", {}, {})
+    text = job.read_text().replace("start_x_mm = 600.00", f"start_x_mm = {x}")
+    job.write_text(text.replace("start_y_mm = 600.00", f"start_y_mm = {y}"))
+    proc = run(em703_exe, "gcode", job, check=status)
+    if status:
+        key, number = ("start_x_mm", 5) if x != "0.00" else ("start_y_mm", 6)
+        assert one_line(proc).startswith(f"{job}: line {number}: {key} must be a place on the "
+                                         "field, 0.00 to 1200.00 mm")
+
+
+def test_a_job_sheet_with_crlf_lines_reads_as_with_lf(em703_exe, example_jobs, tmp_path) -> None:
+    job = example_jobs[0]
+    for tape in job.parent.glob(f"{job.stem}-*.ptp"):
+        (tmp_path / tape.name).write_bytes(tape.read_bytes())
+    crlf = tmp_path / job.name
+    crlf.write_bytes(job.read_bytes().replace(b"\n", b"\r\n"))
+    for sub in ("gcode", "gerber", "drill", "svg"):
+        want = run(em703_exe, sub, job, check=0).stdout
+        assert run(em703_exe, sub, crlf, check=0).stdout == want, sub
 
 
 def test_a_tape_too_long_to_draw_names_the_command(em703_exe, tmp_path) -> None:
