@@ -7,7 +7,7 @@ program test_em703_tools
     use, intrinsic :: iso_fortran_env, only: int64, real64
     use checks, only: check, check_int, check_str, summary
     use base_error, only: error_t, error_text
-    use base_text, only: text_t, str, fixed, mm, octal, parse_mm, parse_real
+    use base_text, only: text_t, str, fixed, mm, octal, parse_int, parse_mm, parse_real
     use em703_codec, only: frame_t, tape_t, decode_tape, encode_tape, frame_text, tape_text, &
                            on_circle
     use em703_html, only: html_job, json_string
@@ -717,6 +717,10 @@ contains
         call check(.not. ok, 'three decimals refused')
         call parse_mm('1e3', u, ok)
         call check(.not. ok, 'exponent refused')
+        call parse_int('-123456789012345678', u, ok)
+        call check(ok .and. u == -123456789012345678_int64, 'parse_int takes 18 digits')
+        call parse_int('1234567890123456789', u, ok)
+        call check(.not. ok, 'parse_int refuses 19 digits')
         call parse_real('0.005', r, ok)
         call check(ok .and. abs(r - 0.005_real64) < 1e-15_real64, 'parse 0.005')
         call parse_real('1e-3', r, ok)
