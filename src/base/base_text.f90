@@ -254,6 +254,12 @@ contains
             end if
             call parse_int(a, whole, ok)
             if (.not. ok) return
+            ! units must fit an int64: a longer number would wrap (2**64 + 84
+            ! units read as 0.84 mm), and is beyond every range anyway
+            if (abs(whole) > (huge(whole) - 99) / 100) then
+                ok = .false.
+                return
+            end if
         else
             whole = 0
         end if

@@ -76,6 +76,9 @@ def test_the_letters_of_a_code_are_read_in_either_case(em703_exe, example_tapes,
     (["sim", "a.ptp", "--start", "1300,0"], "--start takes X,Y in mm on the field"),
     (["sim", "a.ptp", "--start", "5"], "--start takes"),
     (["sim", "a.ptp", "--tool", "0"], "--tool takes"),
+    # 184467440737095517 mm is 2**64 + 84 units: not 0.84 mm
+    (["sim", "a.ptp", "--tool", "184467440737095517"], "--tool takes the tool width in mm"),
+    (["sim", "a.ptp", "--start", "184467440737095517,0"], "--start takes X,Y in mm on the field"),
     (["sim", "a.ptp", "--svg"], "option --svg needs a value"),
     (["svg"], "missing JOB"),
     (["gcode", "a.ptp", "--chords", "0"], "--chords takes the tolerance in mm"),
@@ -165,7 +168,7 @@ def test_a_bad_job_sheet_is_status_1_naming_the_line(em703_exe, example_jobs, tm
     no_tool.write_text("\n".join(l for l in lines if not l.startswith("cond.tool_mm")) + "\n")
     line = one_line(run(em703_exe, "gerber", no_tool, check=1))
     assert line == f'{no_tool}: the job sheet has no "cond.tool_mm = ..." line'
-    for width in ("0.00", "1200.01", "99999999999999.00"):
+    for width in ("0.00", "1200.01", "99999999999999.00", "184467440737095517"):
         wide = tmp_path / "wide.job"
         wide.write_text("\n".join(f"cond.tool_mm = {width}" if l.startswith("cond.tool_mm")
                                   else l for l in lines) + "\n")
@@ -345,6 +348,7 @@ def test_split_takes_a_negative_move(em703_exe) -> None:
     ("start_x_mm", "1300.00", "start_x_mm must be a place on the field, 0.00 to 1200.00 mm "
                               '(two decimals at most), not "1300.00"'),
     ("start_y_mm", "-5", "start_y_mm must be a place on the field"),
+    ("start_x_mm", "184467440737095517", "start_x_mm must be a place on the field"),
 ])
 def test_a_job_sheet_off_the_machine_is_refused(em703_exe, example_jobs, tmp_path, key,
                                                  value, words) -> None:
