@@ -512,7 +512,8 @@ contains
         end do
         if (.not. opened(out, text, tmp, status)) return
         call drill_program(holes(1:n), 'EM-703 job ' // job%name // ': ' // str(n) // &
-                           ' holes of the small- and large-pad tapes', text)
+                           trim(merge(' hole  ', ' holes ', n == 1)) // &
+                           ' of the small- and large-pad tapes', text)
         call close_output(out, text, tmp, status)
     end function run_drill
 

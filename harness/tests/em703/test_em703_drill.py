@@ -182,6 +182,8 @@ def test_pads_of_strokes_that_only_touch_are_two_holes(em703_exe, tmp_path, gap,
     job = write_job(tmp_path, "touch", {"small": encode(frames)}, {})
     text = run(em703_exe, "drill", job, check=0).stdout.decode()
     assert text.splitlines()[4:] == ["T01C1.500", "%", "G90", "G05", "T01", *hits, "M30"]
+    many = "1 hole" if len(hits) == 1 else f"{len(hits)} holes"
+    assert text.splitlines()[1] == f"; EM-703 job touch: {many} of the small- and large-pad tapes"
 
 
 def test_holes_at_and_left_of_the_start_point(em703_exe, tmp_path) -> None:
