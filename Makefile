@@ -51,8 +51,10 @@ TENZOR = "$$(fpm run --runner echo tenzor 2>/dev/null | tail -n 1)"
 setup:
 	@bash scripts/setup.sh
 
+# (scripts/fpm_build.sh: fpm build, every program linked again from the objects
+# as they are, the tests too, whichever fpm command compiled them.)
 build: setup
-	@fpm build >/dev/null
+	@bash scripts/fpm_build.sh >/dev/null
 
 # demo: the tapes, then for each package punched its page (em703 html: the
 # tapes on an animated coordinatograph, to open in a browser).
@@ -75,6 +77,7 @@ test: build
 	python -m pytest
 
 test-checks: setup
+	@bash scripts/fpm_build.sh --profile debug --flag "$(CHECKS)" >/dev/null
 	fpm test --profile debug --flag "$(CHECKS)"
 	TENZOR_EXE="$$(fpm run --profile debug --flag "$(CHECKS)" --runner echo tenzor 2>/dev/null | tail -n 1)" \
 	EM703_EXE="$$(fpm run --profile debug --flag "$(CHECKS)" --runner echo em703 2>/dev/null | tail -n 1)" \
@@ -87,7 +90,7 @@ mutants: build
 FUZZ_TESTS := harness/tests/tenzor/test_fuzz_tenzor.py harness/tests/em703/test_fuzz_em703.py \
 	harness/tests/legacy/test_judges.py
 fuzz: setup
-	fpm build --profile debug --flag "$(CHECKS)" >/dev/null
+	@bash scripts/fpm_build.sh --profile debug --flag "$(CHECKS)" >/dev/null
 	HYPOTHESIS_PROFILE=long \
 	TENZOR_EXE="$$(fpm run --profile debug --flag "$(CHECKS)" --runner echo tenzor 2>/dev/null | tail -n 1)" \
 	EM703_EXE="$$(fpm run --profile debug --flag "$(CHECKS)" --runner echo em703 2>/dev/null | tail -n 1)" \

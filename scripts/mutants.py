@@ -4,8 +4,9 @@ tests catch (mutation testing; not run by CI: it takes a while).
 Each mutant below is one change a programmer could make by mistake: a
 comparison off by one, a constant slightly wrong, a rule's limit moved. For
 each, the file is changed in place, the programs are rebuilt (fpm rebuilds
-only what changed), and the tests that run TENZOR and em703 (`pytest -m
-"tenzor or em703" -x`) and the Fortran unit tests run against them; the
+only what changed; scripts/fpm_build.sh links the test programs again), and
+the tests that run TENZOR and em703 (`pytest -m "tenzor or em703" -x`) and
+the Fortran unit tests run against them; the
 mutant is killed when any test fails, and the table names the first test
 that failed (pytest's ``FAILED path::test`` line). The file is always restored, also when
 the run is interrupted; the script refuses to start on a tree whose legacy/
@@ -25,6 +26,10 @@ from dataclasses import dataclass
 from pathlib import Path
 
 ROOT = Path(__file__).resolve().parents[1]
+#: fpm build with the test programs linked again (scripts/fpm_build.sh): with
+#: a plain `fpm build`, `fpm test` ran the test programs as they were linked
+#: before the mutant, and only pytest could catch it
+BUILD = ["bash", "scripts/fpm_build.sh"]
 
 
 @dataclass(frozen=True)
@@ -229,7 +234,7 @@ def killed(m: Mutant) -> tuple[bool, str]:
         return False, f"NOT APPLIED: the text is not in {m.path} exactly once"
     try:
         path.write_text(text.replace(m.old, m.new))
-        if not _run(["fpm", "build"]):
+        if not _run(BUILD):
             return True, "the build"
         ok, out = _output(["fpm", "test"])
         if not ok:
@@ -272,7 +277,7 @@ def main(argv: list[str]) -> int:
             print(f"{n:2d}/{len(MUTANTS)} {verdict:10s} {m.path}: {m.what} "
                   f"({by}, {time.monotonic() - t:.0f} s)", flush=True)
     finally:
-        _run(["fpm", "build"])
+        _run(BUILD)
     print()
     print("| file | mutant | verdict | caught by |")
     print("|---|---|---|---|")
