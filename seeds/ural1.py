@@ -242,7 +242,9 @@ def report(run: Ural1Run, feed: float, tol: float) -> str:
              "section  kind  length_mm  chords  frames  speed  t_s (l/s*60)  coded_s"]
     for s in run.sections:
         codes = sorted({f.speed for f in s.frames})
-        code = str(codes[0]) if len(codes) == 1 else f"{codes[0]}-{codes[-1]}"
+        # a section whose ends round to one pulse has no frame, and no code
+        code = ("-" if not codes else str(codes[0]) if len(codes) == 1
+                else f"{codes[0]}-{codes[-1]}")
         lines.append(f"{s.number:7d}  {s.kind:4s}  {s.length:9.2f}  {s.chords:6d}  "
                      f"{len(s.frames):6d}  {code:>5s}  {s.time_s(feed):12.1f}  "
                      f"{s.coded_s:7.0f}")

@@ -111,6 +111,31 @@ def test_punching_time_and_tape_length() -> None:
     assert f"{rows * 2.54 / 1000:.2f} m" in text
 
 
+#: a 40 mm square with a slot 1 mm wide down to y = 20
+NOTCH = "NOTCH\n" + "".join(f"{c:<10}{x:>10}{y:>10}\n" for c, x, y in [
+    ("L", "0.00", "0.00"), ("+", "40.00", "0.00"), ("+", "40.00", "40.00"),
+    ("+", "21.00", "40.00"), ("+", "21.00", "20.00"), ("+", "20.00", "20.00"),
+    ("+", "20.00", "40.00"), ("+", "0.00", "40.00"), ("+", "0.00", "0.00")]) + "E\n"
+
+
+def test_a_section_shorter_than_half_a_pulse_has_no_frame(tmp_path: Path) -> None:
+    """A 0.999 mm cutter in the 1 mm slot leaves the slot's floor 0.001 mm
+    long: both its ends round to one pulse, so it has no frame, and its
+    report line no speed code ("-"); it was an IndexError's traceback."""
+    run, = u1.ural1_runs(NOTCH, cutter_mm=0.999)
+    assert [len(s.frames) for s in run.sections].count(0) == 1
+    assert s2.read_5121(run.tape) == run.frames
+    assert "      8  line       0.00       1       0      -           0.0        0" \
+        in u1.report(run, 60, 0.02).splitlines()
+    deck = tmp_path / "notch.crd"
+    deck.write_text(NOTCH)
+    proc = subprocess.run([sys.executable, "-m", "seeds", "ural1", "--cutter", "0.999",
+                           str(deck)], cwd=ROOT, capture_output=True, text=True)
+    assert proc.returncode == 0 and proc.stderr == ""
+    assert proc.stdout.splitlines()[0] == ("NOTCH: 14 sections, feed 60 mm/min, chords "
+                                           "within 0.02 mm")
+
+
 def test_command(tmp_path: Path) -> None:
     tape = tmp_path / "flange.5121"
     cmd = [sys.executable, "-m", "seeds", "ural1", "examples/flange.crd", "--path", "-o", str(tape)]
