@@ -206,6 +206,53 @@ def test_origin_moves_the_start_point(origin: tuple[float, float], tmp_path: Pat
     assert card[10:30] == "      1.00      2.00"
 
 
+def test_a_label_inside_a_pad_attaches_to_the_pad() -> None:
+    """A pad's distance is to its disc, 0 inside it (SEED001-DXF.md), not to
+    its centre: "1" inside a pad of radius 5, 4 mm from the pad's centre and
+    3 mm from a line, is the pad's."""
+    doc, msp = _doc()
+    msp.add_line((7, -5), (7, 5))
+    msp.add_circle((0, 0), 5)
+    msp.add_text("1", dxfattribs={"insert": (4, 0)})
+    conv = seed001.convert(doc)
+    assert conv.ordered and [it.kind for it in conv.items] == ["pad", "conductor"]
+
+
+def test_a_drawing_far_from_its_origin_keeps_its_place() -> None:
+    """The default start point puts the drawing's lower-left corner 10 mm
+    inside the field, but goes no lower than the field's corner: a drawing
+    50 mm right of its origin and 5 mm above it starts at 0, 5 mm."""
+    doc, msp = _doc()
+    msp.add_line((50, 5), (60, 5))
+    deck = seed001.deck_text(seed001.convert(doc), "T")
+    assert _data_cards(deck)[1:4] == ["P               0.00      5.00",
+                                      "L              50.00      5.00",
+                                      "+              60.00      5.00"]
+
+
+def test_package_name_is_the_name_cards_18_columns() -> None:
+    """From the file name: letters, digits, - and _, upper case, the first
+    18 (the name card's columns 1-18); a bare C or E gets a _."""
+    assert seed001.package_name("a-very-long board name.v2.dxf") == "A-VERY-LONG_BOARD_"
+    assert seed001.package_name("dir/c.dxf") == "C_"
+
+
+def test_tools_from_0_01_to_20_mm(tmp_path: Path, capsys) -> None:
+    """--tools: each 0.01 to 20 mm (SEED001-DXF.md), both ends taken, in
+    whole 0.01 mm."""
+    doc, msp = _doc()
+    msp.add_line((0, 0), (5, 0))
+    doc.saveas(tmp_path / "t.dxf")
+    out = tmp_path / "t.crd"
+    assert main(["dxf2deck", str(tmp_path / "t.dxf"), "--tools", "0.01,20,20",
+                 "-o", str(out)]) == 0
+    assert _data_cards(out.read_text())[1][30:54] == "    0.01   20.00   20.00"
+    for bad in ("0.01,20.01,1", "0.009,1,1", "0.5,1,1.005"):
+        assert main(["dxf2deck", str(tmp_path / "t.dxf"), "--tools", bad]) == 2
+        assert f"dxf2deck: --tools {bad}: each tool is 0.01 to 20.00 mm, in whole 0.01 mm" \
+            in capsys.readouterr().err
+
+
 def test_dxf2deck_will_not_write_over_its_drawing(tmp_path: Path, capsys) -> None:
     drawing = tmp_path / "board.dxf"
     drawing.write_bytes((EXAMPLES / "board.dxf").read_bytes())
