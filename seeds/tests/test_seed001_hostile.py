@@ -67,6 +67,22 @@ def test_a_coordinate_off_the_field_around_origin_names_its_distance(tmp_path, c
             f"left out") in err, err
 
 
+def test_a_coordinate_at_the_fields_edge_is_kept(tmp_path, capsys):
+    """Off the field is farther than 1200 mm from the origin: a pad 1200 mm
+    out, either way, is drawn; one a micrometre farther is left out."""
+    doc, msp = _doc()
+    msp.add_circle((1200.0, 5.0), 1.0)
+    msp.add_circle((-1200.0, 5.0), 1.0)
+    far = msp.add_circle((5.0, 1200.001), 1.0)
+    status, err, deck = _run(doc, tmp_path, capsys)
+    assert status == 1
+    assert err.count("left out") == 1
+    assert (f"CIRCLE #{far.dxf.handle} on layer 0: coordinate 1200 mm is off the 1200 mm "
+            f"field around the origin; left out") in err, err
+    assert [c[:30] for c in deck.splitlines() if c.startswith("D")] == [
+        "D            1200.00      5.00", "D           -1200.00      5.00"]
+
+
 @pytest.mark.parametrize("kind", ["radius", "width", "line", "text", "arc"])
 def test_every_kind_of_entity_is_checked(tmp_path, capsys, kind):
     doc, msp = _doc()
