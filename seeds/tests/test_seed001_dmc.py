@@ -312,6 +312,111 @@ def test_a_long_path_is_cut_into_sequences_the_controller_holds(tmp_path, capsys
         assert _hausdorff(drawn, _truth(e)) <= TOL
 
 
+def test_the_travel_to_a_long_path_counts_in_its_sequence(tmp_path, capsys):
+    """A long path that starts away from the origin: the travel VP to it and
+    its first 510 moves fill the first sequence (511), not 511 moves and the
+    travel (512, more than the controller holds)."""
+    doc = ezdxf.new("R2000")
+    pts = [(5 + k * 0.1, 5 + 5 * math.sin(k / 10)) for k in range(1300)]
+    e = doc.modelspace().add_lwpolyline(pts)
+    status, text, _ = _convert(tmp_path, doc, "--mode", "continuous")
+    tr = Trace(text)
+    assert status == 0 and tr.sequences == [511, 510, 279]
+    drawn = [p for piece in tr.pieces_mm for p in piece]
+    assert _hausdorff(drawn, _truth(e)) <= TOL
+
+
+def test_an_arc_is_a_cr_while_its_rounding_stays_within_the_tolerance(tmp_path, capsys):
+    """SEED001-DXF.md: a CR's own rounding (a count of radius and start
+    point, 1/256 degree of each angle) must stay within the tolerance: at
+    1000 counts/mm and 0.005 mm, radii up to about 58 mm.  A 58 mm arc is a
+    CR, a 59 mm one chords."""
+    doc = ezdxf.new("R2000")
+    msp = doc.modelspace()
+    small = msp.add_arc((0, 0), 58, 0, 30)
+    wide = msp.add_arc((0, 200), 59, 0, 30)
+    status, text, _ = _convert(tmp_path, doc)
+    assert status == 0, capsys.readouterr().err
+    crs = [line for line in text.splitlines() if line.startswith("CR ")]
+    assert crs == ["CR 58000,0,30"]
+    pieces = Trace(text).pieces_mm
+    assert _hausdorff(pieces[0], _truth(small)) <= TOL
+    assert len(pieces[1]) > 10 and _hausdorff(pieces[1], _truth(wide)) <= TOL
+
+
+def test_a_small_program_exactly(tmp_path, capsys):
+    """Every line of two small programs: the speeds in counts per second
+    (2.5 mm/s at 1000 counts/mm is VS 2500), the AV distances along the path
+    (no AV where the tool goes on at the path's start), the VPs relative to
+    the sequence's start, the tool bit."""
+    doc = ezdxf.new("R2000")
+    msp = doc.modelspace()
+    line = msp.add_line((0, 0), (10, 0))
+    arc = msp.add_arc((20, 0), 5, 180, 270)
+    msp.add_text("1", dxfattribs={"insert": (5, 1)})
+    msp.add_text("2", dxfattribs={"insert": (16, -4)})
+    status, text, _ = _convert(tmp_path, doc, "--speed", "2.5")
+    assert status == 0, capsys.readouterr().err
+    assert text == f"""\
+#DXF
+NO dxf2dmc d.dxf
+NO continuous mode, 1000 counts/mm, tolerance 0.005 mm, tool bit 1
+DP 0,0
+CB 1
+VS 2500
+SP 2500,2500
+VM XY
+VP 10000,0
+VP 15000,0
+CR 5000,180,90
+VE
+BGS
+NO segment 1: #{line.dxf.handle} on layer 0
+SB 1
+AV 10000
+CB 1
+AV 15000
+NO segment 2: #{arc.dxf.handle} on layer 0
+SB 1
+AV 22854
+CB 1
+AMS
+EN
+"""
+    status, text, _ = _convert(tmp_path, doc, "--mode", "intermittent", "--counts-per-mm",
+                               "400", "--tool-bit", "3")
+    assert status == 0, capsys.readouterr().err
+    assert text == f"""\
+#DXF
+NO dxf2dmc d.dxf
+NO intermittent mode, 400 counts/mm, tolerance 0.005 mm, tool bit 3
+DP 0,0
+CB 3
+VS 4000
+SP 4000,4000
+NO segment 1: #{line.dxf.handle} on layer 0
+SB 3
+VM XY
+VP 4000,0
+VE
+BGS
+AMS
+CB 3
+NO segment 2: #{arc.dxf.handle} on layer 0
+PA 6000,0
+BG XY
+AM XY
+SB 3
+VM XY
+CR 2000,180,90
+VE
+BGS
+AMS
+CB 3
+EN
+"""
+
+
 @pytest.mark.parametrize("make, words", [
     (lambda m: m.add_text("BEGIN OUT 1", dxfattribs={"insert": (1, 1), "layer": "MAC"}),
      "unknown macro 'BEGIN' in 'BEGIN OUT 1'"),
@@ -319,6 +424,8 @@ def test_a_long_path_is_cut_into_sequences_the_controller_holds(tmp_path, capsys
      "output 9 is not one of 1-8"),
     (lambda m: m.add_text("END BLINK 3", dxfattribs={"insert": (1, 1), "layer": "MAC"}),
      "unknown macro command 'BLINK 3'"),
+    (lambda m: m.add_text("START WAIT 1", dxfattribs={"insert": (1, 1), "layer": "MAC"}),
+     "WAIT 1 ms is not 2 to 2147483646 ms"),
     (lambda m: m.add_open_spline([(0, 0), (1, 1)], degree=3, dxfattribs={"layer": "CURVES"}),
      "cannot be flattened (DXFValueError: got 2 control points, need 4 or more"),
     (lambda m: m.add_open_spline([(0, 0), (1, float("nan")), (2, 0), (3, 1)],
@@ -380,6 +487,9 @@ def test_usage_errors(tmp_path, capsys):
      "a count (0.01 mm) must be at most half the tolerance (0.005 mm): --counts-per-mm 100 "
      "with --tolerance 0.005 mm, where at least 400 counts a mm would do"),
     (["--counts-per-mm", "1000", "--tolerance", "0.0001"], "at least 20000 counts a mm"),
+    # a count must be at most half the tolerance, not merely within it
+    (["--counts-per-mm", "399"], "--counts-per-mm 399 with --tolerance 0.005 mm, where at "
+                                 "least 400 counts a mm would do"),
 ])
 def test_counts_per_mm_out_of_range_is_said_as_given(tmp_path, capsys, args, words):
     doc, _ = _drawing()
