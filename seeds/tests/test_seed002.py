@@ -307,6 +307,14 @@ def test_example_decks_are_the_generators_output() -> None:
     assert proc.returncode == 0 and blade.read_text() in proc.stdout
 
 
+def test_contour_cards_round_half_up() -> None:
+    """Millimetres to the cards' 0.01 mm are rounded half up (a half goes
+    toward +inf, not to the even unit): 0.125 is 0.13, 0.625 is 0.63,
+    -0.125 is -0.12."""
+    assert cn.contour_cards([cn.Seg(0.125, 0.625, 2.5, -0.125)]) == [
+        "L               0.13      0.63", "+               2.50     -0.12"]
+
+
 def test_flange_deck_reads_back() -> None:
     (pkg,) = parse_deck((ROOT / "examples" / "flange.crd").read_text())
     back = cn.close_chain(cn.contour_from_package(pkg))
@@ -360,6 +368,10 @@ FLANGE = (ROOT / "examples" / "flange.crd").read_text()
     (["equidistant", "--cutter", "4"], NOTCH,
      "package NOTCH: the line to card 7 vanishes in the equidistant (the cutter is too large "
      "for it)"),
+    # a cutter exactly as wide as the slot: its floor shrinks to nothing
+    (["equidistant", "--cutter", "1"], NOTCH,
+     "package NOTCH: the line to card 7 vanishes in the equidistant (the cutter is too large "
+     "for it)"),
     (["ural1", "--cutter", "2"], NOTCH.replace("NOTCH", "SLOT"),
      "package SLOT: the line to card 7 vanishes in the equidistant (the cutter is too large "
      "for it)"),
@@ -383,6 +395,16 @@ def test_a_contour_that_cannot_be_cut_names_its_package_and_cards(
     path.write_text(deck)
     assert main([*command, str(path)]) == 1
     assert capsys.readouterr().err == f"{command[0]}: {path}: {message}\n"
+
+
+def test_an_equidistant_package_keeps_its_name_in_18_columns() -> None:
+    """NAME-EQ: the name cut to 15 characters, so that with -EQ it fills the
+    name card's 18 columns and no more (TENZOR reads columns 1-18)."""
+    square = _deck("SQUARE-WITH-A-LONG", ("L", "0.00", "0.00"), ("+", "40.00", "0.00"),
+                   ("+", "40.00", "40.00"), ("+", "0.00", "40.00"), ("+", "0.00", "0.00"))
+    lines = s2.equidistant_deck(square, 10).splitlines()
+    assert lines[3] == "SQUARE-WITH-A-L-EQ"
+    assert [p.name.strip() for p in parse_deck("\n".join(lines) + "\n")] == ["SQUARE-WITH-A-L-EQ"]
 
 
 def test_options_are_taken_only_by_their_whole_name(capsys) -> None:
@@ -439,6 +461,15 @@ def test_5121_tape_round_trip(frames: list) -> None:
     assert s2.read_5121(data) == frames
 
 
+def test_a_number_of_one_digit_too_many_is_refused() -> None:
+    """DX and DY have four digits on the tape, DZ three: 10000 and 1000 do
+    not fit (a fifth tetrad would shift every row after it)."""
+    for f in (s2.Frame5121(10000, 0), s2.Frame5121(0, -10000), s2.Frame5121(0, 0, 1000)):
+        with pytest.raises(ValueError, match="does not fit"):
+            s2.frame_rows_5121(f)
+    assert len(s2.frame_rows_5121(s2.Frame5121(9999, -9999, 999))) == s2.ROWS_PER_FRAME
+
+
 def test_split_then_punch(tmp_path: Path) -> None:
     """The document's 98132, 87647 split by 'split' and punched in 5121."""
     tape = tmp_path / "move.ptp"
@@ -455,6 +486,20 @@ def test_split_then_punch(tmp_path: Path) -> None:
     bad = subprocess.run([sys.executable, "-m", "seeds", "punch5121", "-", "-o", str(tape)],
                          cwd=ROOT, input="98132 87647\n", capture_output=True, text=True)
     assert bad.returncode == 1 and "split --max 9999" in bad.stderr
+
+
+def test_punch5121_takes_all_seven_fields(tmp_path: Path, capsys) -> None:
+    """A frame line is DX DY [DZ [SPEED [AUX_X [AUX_Y [AUX_Z]]]]]: all seven
+    are punched and read back; an eighth is an error naming the line."""
+    src, tape = tmp_path / "f.txt", tmp_path / "f.ptp"
+    src.write_text("12 -34 5 6 7 1 3\n")
+    assert main(["punch5121", str(src), "-o", str(tape)]) == 0
+    assert main(["punch5121", "--decode", str(tape)]) == 0
+    assert capsys.readouterr().out == "12 -34 5 6 7 1 3\n"
+    src.write_text("1 2\n1 2 3 4 5 6 3 0\n")
+    assert main(["punch5121", str(src), "-o", str(tape)]) == 1
+    assert capsys.readouterr().err == (f"punch5121: {src}: line 2: expected DX DY [DZ [SPEED "
+                                       f"[AUX_X [AUX_Y [AUX_Z]]]]]\n")
 
 
 def test_5121_reader_names_the_row() -> None:
