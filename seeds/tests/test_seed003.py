@@ -56,6 +56,20 @@ def test_long_increments_are_split_at_15_bits() -> None:
     assert all(abs(c.dx) <= s3.MAX_STEP and abs(c.dy) <= s3.MAX_STEP for c in moves)
 
 
+def test_the_longest_increments_of_one_and_of_m_parts() -> None:
+    """0x7FFF pulses is still one move (int/2 is the limit, not beyond it);
+    m x 0x7FFF = 131068 is still m moves, each of 0x7FFF; one pulse more
+    is refused."""
+    assert s3.program([[(0, 0), (32767, -32767)]])[2] == s3.Command(s3.OP_LINE, dx=32767,
+                                                                    dy=-32767)
+    assert s3.program([[(0, 0), (32767, -32767)]])[3] == s3.Command(s3.OP_Z, s3.LAYER_UP)
+    cmds = s3.program([[(0, 0), (0, 131068)]])
+    assert cmds[2:7] == [s3.Command(s3.OP_LINE, dx=0, dy=32767)] * 4 + [
+        s3.Command(s3.OP_Z, s3.LAYER_UP)]
+    with pytest.raises(ValueError, match="increment of 131069 pulses"):
+        s3.program([[(0, 0), (0, 131069)]])
+
+
 def test_program_shape() -> None:
     """First command sets z (raised), the last is 'конец УП'."""
     cmds = s3.program([[(10, 10), (20, 10)], [(30, 30), (30, 40), (40, 40)]])
@@ -117,6 +131,20 @@ def test_blocks_and_packets() -> None:
     assert pk[1][:3] == bytes([s3.SOH, 2, 253]) and len(pk[1]) == 133
     crc = s3.crc16(bl[1])
     assert pk[1][-2:] == bytes([crc >> 8, crc & 0xFF])
+
+
+def test_block_numbers_wrap_after_255() -> None:
+    """The block number is one byte, mod 256 (XMODEM's): block 256 is 0 and
+    block 257 is 1, each with its complement; a program of 300 blocks goes
+    through whole."""
+    block = bytes(128)
+    assert [s3.packet(n, block)[:3] for n in (255, 256, 257)] == [
+        bytes([s3.SOH, 255, 0]), bytes([s3.SOH, 0, 255]), bytes([s3.SOH, 1, 254])]
+    data = bytes((k * 7 + k // 128) & 0xFF for k in range(300 * 128))
+    result = s3.send(data)
+    assert result.ok and result.transmissions == 300
+    assert result.message == "program sent: 300 blocks, 300 transmissions"
+    assert b"".join(result.controller.memory) == data
 
 
 @given(block=st.binary(min_size=128, max_size=128), start=st.integers(0, 132 * 8 - 1),
