@@ -181,6 +181,19 @@ def test_parameter_entry_checks_ranges() -> None:
     ]
 
 
+def test_both_ends_of_every_range_are_taken() -> None:
+    """A value at either end of its parameter's range is taken as given,
+    with no message; one past an end gets the default."""
+    low = "\n".join(f"{p.name} = {p.low}" for p in s3.PARAMS) + "\naxes = 4\n"
+    high = "\n".join(f"{p.name} = {p.high}" for p in s3.PARAMS) + "\n"
+    for text, end in ((low, "low"), (high, "high")):
+        values, notes = s3.read_params(text, "p.txt")
+        assert notes == []
+        assert values == {p.name: 4 if p.name == "axes" else getattr(p, end) for p in s3.PARAMS}
+    values, notes = s3.read_params("axes = 4\nphi = 10000001\nz7 = 32768\n", "p.txt")
+    assert values["phi"] == 3600 and values["z7"] == 0 and len(notes) == 2
+
+
 def test_a_bad_value_of_another_axis_group_is_said_to_be_unused() -> None:
     # "z0 = -1 is out of range 0..32767; set to the default 500" on a machine
     # of 2 axes, which has no z0
