@@ -214,6 +214,21 @@ def test_equal_split_command(capsys) -> None:
         "division point from the line 0.393919 pulses\n")
 
 
+def test_split_exit_status_tells_a_usage_error_from_a_refused_move(capsys) -> None:
+    """--max below 1 is a usage error (2); a move the limit cannot split is
+    refused (1: no equal frames fit, as docs/SEED004-TAPE-CODES.md says, or
+    more than a million frames)."""
+    for args in (["--max", "0", "5", "3"], ["--equal", "--max", "-1", "5", "3"]):
+        assert main(["split", *args]) == 2
+        assert capsys.readouterr().err.startswith(f"split: --max {args[-3]}: a frame's limit")
+    assert main(["split", "--equal", "--max", "2", "9", "3"]) == 1
+    assert capsys.readouterr().err == ("split: no equal frames of at most 2 pulses fit the "
+                                       "move (9, 3)\n")
+    assert main(["split", "--max", "1", "2000000", "0"]) == 1
+    assert "needs 2000000 frames of at most 1 pulses, more than 1000000" in \
+        capsys.readouterr().err
+
+
 def test_equal_split_exists_exactly_when_some_split_does() -> None:
     """Every move of up to 40 pulses with limits 1-5: the convergents find
     equal frames whenever a search of all (k, a, b) does."""
