@@ -103,6 +103,19 @@ def test_z_auxiliary_bits_like_x_and_y() -> None:
     assert s2.read_5121(s2.punch_5121([f])) == [f]
 
 
+def test_speed_code_is_the_shortest_cycle_not_shorter_than_the_frame() -> None:
+    """A frame as long as a cycle takes that cycle: at 60 mm/min, 1 mm is
+    1 s (code 1), 32 mm is 32 s (code 6), a pulse more is code 7; a 3-4-5
+    frame of 5 mm takes the 8 s cycle (code 4)."""
+    assert u1.speed_code(100, 0, 60) == 1
+    assert u1.speed_code(0, -3200, 60) == 6
+    assert u1.speed_code(3201, 0, 60) == 7
+    assert u1.speed_code(300, 400, 60) == 4
+    assert u1.speed_code(25600, 0, 60) == 9
+    with pytest.raises(ValueError, match="longer than the longest cycle"):
+        u1.speed_code(25601, 0, 60)
+
+
 def test_punching_time_and_tape_length() -> None:
     run, = u1.ural1_runs(FLANGE, path_given=True)
     text = u1.report(run, 60, 0.02)
