@@ -253,6 +253,19 @@ def test_tools_from_0_01_to_20_mm(tmp_path: Path, capsys) -> None:
             in capsys.readouterr().err
 
 
+@pytest.mark.parametrize("argv", [
+    ["dxf2deck", "--origin", "1,2,3"], ["dxf2deck", "--start", "10"],
+    ["dxf2deck", "--tools", "0.2,0.2,0.2,0.2"], ["dxf2dmc", "--origin", "1,2,3"],
+    ["gerber2deck", "--start", "10,10,10"], ["gerber2deck", "--tools", "0.2,0.2"]])
+def test_a_list_of_mm_has_exactly_its_count(tmp_path: Path, capsys, argv: list[str]) -> None:
+    """X,Y and W1,W2,W3: a value too many is as wrong as one too few (a
+    third coordinate was taken and dropped without a word)."""
+    n = {"--origin": 2, "--start": 2, "--tools": 3}[argv[1]]
+    assert main([*argv, str(tmp_path / "any.dxf")]) == 2
+    assert capsys.readouterr().err == (f"{argv[0]}: {argv[1]} {argv[2]}: {n} finite numbers "
+                                       f"of mm separated by commas\n")
+
+
 def test_dxf2deck_will_not_write_over_its_drawing(tmp_path: Path, capsys) -> None:
     drawing = tmp_path / "board.dxf"
     drawing.write_bytes((EXAMPLES / "board.dxf").read_bytes())
