@@ -137,6 +137,22 @@ def test_the_drilling_tour_against_the_drill_files_order(punched, job):
         f"{OWN_MM / 1000:.2f} m, in TENZOR's order {tenzor / 1000:.2f} m ({than})")
 
 
+def test_a_hole_of_dmax_is_on_the_small_tape(tmp_path):
+    """A pad of exactly DMAX goes on the small-pad tape (docs/CARDS.md: "at
+    most DMAX"), so the drill file's order visits a 2.00 mm hole on the small
+    tape and a 2.01 mm one on the large: 0 -> (10, 10) -> 0 and
+    0 -> (40, 10) -> 0."""
+    from seeds.tapereport import own_order_travel
+    deck = tmp_path / "d.crd"
+    deck.write_text("X-DRILL\n"
+                    "P              10.00     10.00    0.80    0.80    0.80    2.00\n"
+                    "D              10.00     10.00    2.00\n"
+                    "D              40.00     10.00    2.01\n"
+                    "E\n", encoding="ascii")
+    holes, own = own_order_travel(deck, "X-DRILL")
+    assert holes == 2 and own == pytest.approx(2 * math.hypot(10, 10) + 2 * math.hypot(40, 10))
+
+
 def test_a_deck_without_a_drill_package_beside_is_said(copy):
     (copy / "out" / "BOARD-DRILL.job").unlink()
     status, out, err = report(copy, "out/BOARD.job", "--deck", "board.crd")
@@ -204,6 +220,27 @@ def test_what_it_cannot_use_is_named(copy, what, breaking, status, words):
     got, out, err = report(copy, "out/BOARD.job", "--deck", "board.crd")
     assert (got, words in err) == (status, True), err
     assert err.count("\n") == 1 and not out.strip(), (out, err)
+
+
+@pytest.mark.parametrize("tool, status", [("1200.00", 0), ("1200", 0), ("1200.01", 2),
+                                          ("0.01", 0), ("0.00", 2)])
+def test_a_tool_of_the_job_sheet_is_above_0_and_at_most_1200_mm(copy, tool, status):
+    """The job sheet's tools: above 0 and at most 1200 mm (the field), both
+    ends as the message says."""
+    _edit(copy / "out" / "BOARD.job", "large.tool_mm = 0.40", f"large.tool_mm = {tool}")
+    got, out, err = report(copy, "out/BOARD.job")
+    assert got == status, err
+    if status:
+        assert err == (f"tapereport: out/BOARD.job: line {_line(copy, 'large.tool_mm')}: "
+                       f"large.tool_mm must be a tool width in mm (above 0, at most 1200, two "
+                       f"decimals), not '{tool}'\n")
+    else:
+        assert f"tool {tool} mm)" in out.splitlines()[1]
+
+
+def _line(here: Path, key: str) -> int:
+    lines = (here / "out" / "BOARD.job").read_text(encoding="ascii").splitlines()
+    return next(no for no, ln in enumerate(lines, 1) if ln.startswith(key))
 
 
 @pytest.mark.parametrize("board", BOARDS, ids=[b[0] for b in BOARDS])
