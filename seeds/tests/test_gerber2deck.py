@@ -54,6 +54,84 @@ def test_a_small_board_becomes_rows_tracks_and_strokes(tmp_path, run_tenzor):
     assert (out / "TINY.job").exists()
 
 
+OBROUNDS = """%FSLAX46Y46*%
+%MOMM*%
+%ADD13O,3.000000X1.000000*%
+%ADD14O,1.000000X3.000000*%
+%ADD10C,2.000000*%
+D13*
+X20000000Y20000000D03*
+D14*
+X30000000Y20000000D03*
+D10*
+X40000000Y20000000D03*
+M02*
+"""
+
+
+def test_obrounds_are_conductors_along_their_long_side(tmp_path):
+    """An obround 3 x 1 mm is a conductor 1 mm wide from end to end along x,
+    one 1 x 3 mm along y; the start point is the copper's lower-left corner
+    (18.50, 18.50 mm); the 2 mm round pad a D card."""
+    gbr = tmp_path / "ob.gbr"
+    gbr.write_text(OBROUNDS)
+    proc = g2d(gbr)
+    assert proc.returncode == 0, proc.stderr
+    assert proc.stdout.splitlines()[4:11] == [
+        "P              10.00     10.00    1.00    1.00    1.00    2.00",
+        "D              21.50      1.50    2.00",
+        "L               0.50      1.50    1.00",
+        "+               2.50      1.50",
+        "L              11.50      0.50    1.00",
+        "+              11.50      2.50",
+        "E"]
+    assert "2 obround pads drawn as short conductors of their width" in proc.stderr
+
+
+def test_a_pad_of_dmax_is_drawn_with_the_small_pad_tool(tmp_path):
+    """A pad of exactly DMAX (2.00 mm) is the small-pad tape's, so W1 must
+    fit it: --tools 2.5,0.5,0.3 is refused for it, though W2 would fit."""
+    gbr = tmp_path / "ob.gbr"
+    gbr.write_text(OBROUNDS)
+    proc = g2d(gbr, "--tools", "2.5,0.5,0.3", "-o", tmp_path / "ob.crd")
+    assert proc.returncode == 1
+    assert proc.stderr.splitlines()[-1] == (
+        f"gerber2deck: {gbr}: a pad of 2.00 mm at board 40.00, 20.00 mm is smaller than its "
+        f"tool (2.50 mm): give smaller tools with --tools; no deck written")
+    assert not (tmp_path / "ob.crd").exists()
+    assert g2d(gbr, "--tools", "2,2.5,0.3").returncode == 0
+
+
+def test_a_board_must_fit_the_field_on_each_axis(tmp_path):
+    """A board 100 mm wide and 10 mm high placed at 1150, 10 mm does not fit
+    the field (1250 mm on x); placed at 10, 1150 it does."""
+    gbr = tmp_path / "long.gbr"
+    gbr.write_text("%FSLAX46Y46*%\n%MOMM*%\n%ADD10C,0.2*%\nD10*\nG36*\nX0Y0D02*\n"
+                   "X100000000Y0D01*\nX100000000Y10000000D01*\nX0Y10000000D01*\nX0Y0D01*\n"
+                   "G37*\nM02*\n")
+    far = g2d(gbr, "--start", "1150,10", "-o", tmp_path / "far.crd")
+    assert far.returncode == 1 and not (tmp_path / "far.crd").exists()
+    assert (f"{gbr}: the board is 100.00 x 10.00 mm; placed at 1150, 10 mm it does not fit "
+            f"the 1200 x 1200 mm field of the coordinatograph; no deck written") in far.stderr
+    assert g2d(gbr, "--start", "10,1150", "-o", tmp_path / "up.crd").returncode == 0
+
+
+def test_drill_tool_and_rows_of_two() -> None:
+    """The drill package's tool is the smallest hole rounded down (0.807 mm:
+    0.80, never larger than a hole); two equal pads at a step are one row of
+    N = 2."""
+    from seeds import gerber
+    holes = [gerber.Hole(1.0, 1.0, 0.807), gerber.Hole(3.0, 1.0, 1.0)]
+    assert gerber.drill_tool(holes) == 80
+    assert gerber.drill_cards(holes, (0.0, 0.0)) == (
+        ["D               1.00      1.00    0.81", "D               3.00      1.00    1.00"], 80)
+    pads = [gerber.Pad(0, 0, 160, None), gerber.Pad(254, 0, 160, None),
+            gerber.Pad(0, 500, 160, None)]
+    assert gerber.pad_cards(pads) == [
+        "D               0.00      0.00    1.60           2      2.54      0.00",
+        "D               0.00      5.00    1.60"]
+
+
 def test_errors_are_one_line_and_leave_no_deck(tmp_path):
     missing = g2d(tmp_path / "none.gbr", "-o", tmp_path / "x.crd")
     assert missing.returncode == 2 and "none.gbr" in missing.stderr
