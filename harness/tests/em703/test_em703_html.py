@@ -277,3 +277,54 @@ def test_names_are_escaped_in_the_page(em703_exe, tmp_path) -> None:
     assert page.count("</script>") == page.count("<script")
     assert '"name":"A\\u003c/script>\\u003cb>\\"\\\\"' in page
     assert "<title>EM-703 job A&lt;/script&gt;&lt;b&gt;\"\\</title>" in page
+
+
+def _view_rows(em703_exe, tape: Path) -> dict[int, str]:
+    """em703 view's line of every row of a tape, by row number."""
+    lines = run(em703_exe, "view", tape).stdout.decode().splitlines()
+    return {int(line[:5]): line for line in lines if line[:5].strip().isdigit()}
+
+
+def test_the_strip_is_em703_views_rows_with_the_frame_under_way_highlighted(
+        em703_exe, tmp_path, browser) -> None:
+    """At every step the strip is `em703 view` of the 33 rows around the
+    reader mark, the mark on the first row of the frame executed last (the
+    state's row), and exactly that frame's rows highlighted, from the row
+    after the previous frame's KK (or the opening GM) to its own KK. A tape
+    in the "8" code and one in the code with control (whose digits 3, 5, 6, 9
+    have their own rows)."""
+    saw = [Frame(dx=300, dy=400, cyc=8, k=10), Frame(dx=100, dy=-400, k=10),
+           Frame(dx=-3200, k=20)]
+    digits = [Frame(dx=3569, dy=-9653, k=10), Frame(dx=-3569, dy=9653, k=20)]
+    for code in ("8", "K"):
+        job = write_job(tmp_path, f"STRIP{code}", {"small": encode(saw, code),
+                                                   "cond": encode(digits, code)}, {}, code)
+        open_page(browser, page_of(em703_exe, job, tmp_path / f"strip{code}.html"))
+        for key in ("small", "cond"):
+            tape = tmp_path / f"STRIP{code}-{key}.ptp"
+            view = _view_rows(em703_exe, tape)
+            gm = [r for r, line in view.items() if line.endswith(" GM")]
+            kk = [r for r, line in view.items() if line.endswith(" KK")]
+            spans = list(zip([gm[0] + 1] + [r + 1 for r in kk[:-1]], kk))  # a frame's rows
+            seen = browser.execute_script(
+                "em703.select(arguments[0]); var out = [];"
+                "for (var s = em703.state(); ; s = em703.step(1)) {"
+                "  var strip = document.getElementById('strip'), lit = [];"
+                "  strip.querySelectorAll('.hl').forEach(function (e) {"
+                "    lit.push(e.textContent); });"
+                "  out.push([s, strip.textContent, lit]);"
+                "  if (s.done) return out; }", key)
+            assert len(seen) == seen[-1][0]["total"] + 1
+            for state, text, lit in seen:
+                lines = text.split("\n")
+                assert len(lines) == 2 + 33 + 1, (tape, state)
+                mark = gm[0] if state["frame"] == 0 else spans[state["frame"] - 1][0]
+                if state["frame"]:
+                    assert state["row"] == mark, (tape, state)
+                for i, line in enumerate(lines[2:-1]):
+                    row = mark - 16 + i
+                    assert line == ("\u25b6" if row == mark else " ") + \
+                        view.get(row, "      |      .        |"), (tape, state, row)
+                want = [] if state["frame"] == 0 else \
+                    list(range(spans[state["frame"] - 1][0], spans[state["frame"] - 1][1] + 1))
+                assert [int(line[:5]) for line in lit] == want, (tape, state)
