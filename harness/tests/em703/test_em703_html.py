@@ -328,3 +328,67 @@ def test_the_strip_is_em703_views_rows_with_the_frame_under_way_highlighted(
                 want = [] if state["frame"] == 0 else \
                     list(range(spans[state["frame"] - 1][0], spans[state["frame"] - 1][1] + 1))
                 assert [int(line[:5]) for line in lit] == want, (tape, state)
+
+
+def _ink(browser) -> list[str]:
+    """The field's drawing canvas as rows of "#" (drawn black, the tool) and "."."""
+    return browser.execute_script(
+        "var c = document.getElementById('drawing'), w = c.width, h = c.height;"
+        "var d = c.getContext('2d').getImageData(0, 0, w, h).data, rows = [];"
+        "for (var y = 0; y < h; y++) { var s = '';"
+        "  for (var x = 0; x < w; x++) { var p = 4 * (y * w + x);"
+        "    s += d[p + 3] > 128 && d[p] < 64 && d[p + 1] < 64 && d[p + 2] < 64 ? '#' : '.'; }"
+        "  rows.push(s); } return rows;")
+
+
+def _box(ink: list[str]) -> tuple[int, int, int, int]:
+    """Left, right, top and bottom pixel of the ink."""
+    cols = [x for row in ink for x, c in enumerate(row) if c == "#"]
+    rows = [y for y, row in enumerate(ink) if "#" in row]
+    return min(cols), max(cols), min(rows), max(rows)
+
+
+def test_the_field_is_fitted_and_drawn_with_the_tools_width(em703_exe, tmp_path,
+                                                            browser) -> None:
+    """The field's canvas, read back pixel by pixel: the drawing is centred and
+    fills the field on its longer side; a line and a dot (K10 without a move)
+    are as wide as the job sheet's tool at that scale; a clockwise (K13) and a
+    counter-clockwise (K11) quarter arc are drawn on their own side of the
+    chord, around the centre X, Y gives, not the other three quarters."""
+    small = [Frame(k=10), Frame(dx=10000, k=20), Frame(dy=5000, k=10),
+             Frame(dx=-10000, dy=-5000, k=20)]
+    cw = [Frame(y=5000, dx=5000, dy=-5000, k=13), Frame(dx=-5000, dy=5000, k=20)]
+    ccw = [Frame(x=5000, dx=-5000, dy=5000, k=11), Frame(dx=5000, dy=-5000, k=20)]
+    job = write_job(tmp_path, "FIELD", {"small": encode(small), "large": encode(ccw),
+                                        "cond": encode(cw)},
+                    {"small": "2.00", "large": "1.00", "cond": "1.00"})
+    open_page(browser, page_of(em703_exe, job, tmp_path / "field.html"))
+    size = browser.execute_script("return document.getElementById('drawing').width")
+    # The line and the dot: the ink is x -1..101 mm, y -1..51 mm (the tool 2 mm).
+    browser.execute_script("em703.select('small'); em703.step(10);")
+    ink = _ink(browser)
+    left, right, top, bottom = _box(ink)
+    assert abs((left + right) / 2 - size / 2) <= 1.5 and abs((top + bottom) / 2 - size / 2) <= 1.5
+    assert 0 < left and right < size - 1 and right - left + 1 >= 0.9 * size, (left, right)
+    px = (right - left + 1) / 102                       # pixels a millimetre
+    assert abs((bottom - top + 1) - 52 * px) <= 2, (top, bottom, px)
+    dot = ink[round(bottom - 1 * px)][left:left + round(10 * px)]
+    line = ink[round(bottom - 26 * px)][right - round(10 * px):right + 1]
+    assert abs(dot.count("#") - 2 * px) <= 1.5, (dot, px)
+    assert abs(line.count("#") - 2 * px) <= 1.5, (line, px)
+    assert "#" not in ink[round(bottom - 26 * px)][:right - round(10 * px)]
+    # The quarter arcs: the ink is the quarter's box and the tool's half width;
+    # its middle (45 degrees from the chord's ends) is drawn, the centre is not.
+    for key, (xmin, ymax), middle, centre in (("cond", (0, 0), (35.36, -14.64), (0, -50)),
+                                              ("large", (-50, 50), (-14.64, 35.36), (-50, 0))):
+        browser.execute_script("em703.select(arguments[0]); em703.step(10);", key)
+        ink = _ink(browser)
+        left, right, top, bottom = _box(ink)
+        assert abs(right - left - (bottom - top)) <= 2 and right - left + 1 >= 0.9 * size
+        px = (right - left + 1) / 51
+        mx, my = (round(left + (middle[0] - xmin + 0.5) * px),
+                  round(top + (ymax - middle[1] + 0.5) * px))
+        cx, cy = (round(left + (centre[0] - xmin + 0.5) * px),
+                  round(top + (ymax - centre[1] + 0.5) * px))
+        assert ink[my][mx] == "#", (key, mx, my)
+        assert "#" not in "".join(row[cx - 5:cx + 6] for row in ink[cy - 5:cy + 6]), key
