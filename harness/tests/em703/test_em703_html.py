@@ -392,3 +392,94 @@ def test_the_field_is_fitted_and_drawn_with_the_tools_width(em703_exe, tmp_path,
                   round(top + (ymax - centre[1] + 0.5) * px))
         assert ink[my][mx] == "#", (key, mx, my)
         assert "#" not in "".join(row[cx - 5:cx + 6] for row in ink[cy - 5:cy + 6]), key
+
+
+def _panel(browser) -> dict[str, str]:
+    """The machine panel's rows, name: value."""
+    return dict(browser.execute_script(
+        "var out = []; document.querySelectorAll('#state tr').forEach(function (tr) {"
+        "  out.push([tr.cells[0].textContent, tr.cells[1].textContent]); }); return out;"))
+
+
+def _panel_of(state: dict, label: str, file: str) -> dict[str, str]:
+    """What the machine panel shows for a state of the page."""
+    command = {10: "line / dot", 20: "travel / raise", 11: "arc counter-clockwise",
+               13: "arc clockwise"}
+    return {
+        "tape": f"{state['tape']} ({label}), {file}",
+        "X from the start point": fixed(state["x_mm"], 2) + " mm",
+        "Y from the start point": fixed(state["y_mm"], 2) + " mm",
+        "tool": state["tool"],
+        "command": f"K{state['k']} ({command[state['k']]})" if state["k"] else "-",
+        "cycle": f"pass {state['pass']} of {state['passes']}" if state["passes"] else "-",
+        "frames executed": f"{state['executed']} of {state['total']}",
+        "tape frame": f"{state['frame']} of {state['frames']}, row {state['row']}",
+        "drawn": fixed(state["drawn_mm"], 2) + " mm",
+        "travel": fixed(state["travel_mm"], 2) + " mm",
+        "machine time": fixed(state["minutes"], 3) + " min",
+        "": "the tape has run to its end" if state["done"] else ""}
+
+
+def test_the_panel_and_the_controls(em703_exe, tmp_path, browser) -> None:
+    """The heading gives the job's code, scale and start point; the machine
+    panel shows the state at every step (in em703's decimals, the arcs'
+    direction named); the buttons one frame forward and back and reset, and
+    a click on a row of the strip, run the tape to where they say."""
+    from selenium.webdriver.common.action_chains import ActionChains
+    saw = encode([Frame(dx=300, dy=400, cyc=8, k=10), Frame(dx=100, dy=-400, k=10),
+                  Frame(dx=-3200, k=20)])
+    arcs = encode([Frame(x=2000, dx=-2000, dy=-2000, k=13), Frame(y=-500, k=11),
+                   Frame(dx=2000, dy=2000, k=20)])
+    job = write_job(tmp_path, "PANEL", {"small": saw, "cond": arcs}, {})
+    job.write_text(job.read_text().replace("scale = 1:1", "scale = 1:2")
+                   .replace("start_y_mm = 600.00", "start_y_mm = 150.00"))
+    open_page(browser, page_of(em703_exe, job, tmp_path / "panel.html"))
+    assert browser.find_element("id", "subtitle").text == \
+        "code 8, scale 1:2, start point at 600.00, 150.00 mm on the field"
+    for key, label, file in (("small", "small pads", "PANEL-small.ptp"),
+                             ("cond", "conductors", "PANEL-cond.ptp")):
+        seen = browser.execute_script(
+            "var out = [[em703.select(arguments[0]), []]];"
+            "for (var i = 0; i < 20; i++) out.push([em703.step(1), []]);"
+            "out.forEach(function (s, i) { em703.seek(i); document.querySelectorAll("
+            "  '#state tr').forEach(function (tr) {"
+            "  s[1].push([tr.cells[0].textContent, tr.cells[1].textContent]); }); });"
+            "return out;", key)
+        for state, rows in seen:
+            assert dict(rows) == _panel_of(state, label, file), state
+    browser.execute_script("em703.setCyrillic(true); em703.seek(1);")
+    assert _panel(browser)["command"] == "\u041a13 (arc clockwise)"
+    browser.execute_script("em703.setCyrillic(false); em703.select('small');")
+
+    def click(name: str) -> dict:
+        browser.find_element("id", name).click()
+        return browser.execute_script("return em703.state()")
+
+    assert [click("fwd")["executed"] for _ in range(3)] == [1, 2, 3]
+    assert click("back")["executed"] == 2
+    assert _panel(browser)["frames executed"] == "2 of 17"
+    assert browser.find_element("id", "goto").get_attribute("value") == "2"
+    browser.execute_script("em703.seek(16)")
+    assert click("back")["executed"] == 15 and click("fwd")["executed"] == 16
+    assert click("reset")["executed"] == 0 and click("back")["executed"] == 0
+
+    strip = browser.find_element("id", "strip")
+
+    def click_row(row: int) -> dict:
+        lines = browser.execute_script("return arguments[0].textContent", strip).split("\n")
+        index = next(i for i, line in enumerate(lines) if line[1:6].strip() == str(row))
+        box = browser.execute_script(
+            "var e = arguments[0]; return [e.clientHeight, e.clientTop,"
+            " e.getBoundingClientRect().height];", strip)
+        y = (index + 0.5) * box[0] / len(lines) + box[1] - box[2] / 2
+        ActionChains(browser).move_to_element_with_offset(strip, 0, round(y)).click().perform()
+        return browser.execute_script("return em703.state()")
+
+    # the saw: frame 1 rows 22-35 (run 8 times with frame 2, rows 36-49), frame 3 rows 50-59
+    assert click_row(21)["executed"] == 0                # the GM: no frame
+    got = click_row(36)
+    assert (got["executed"], got["frame"], got["pass"]) == (2, 2, 1)
+    got = click_row(52)
+    assert (got["executed"], got["frame"]) == (17, 3)
+    got = click_row(35)
+    assert (got["executed"], got["frame"], got["pass"]) == (1, 1, 1)
