@@ -15,6 +15,7 @@ Without a browser these tests skip, saying why; under CI (CI=true) they fail.
 from __future__ import annotations
 
 import json
+import math
 import os
 import shutil
 import struct
@@ -483,3 +484,23 @@ def test_the_panel_and_the_controls(em703_exe, tmp_path, browser) -> None:
     assert (got["executed"], got["frame"]) == (17, 3)
     got = click_row(35)
     assert (got["executed"], got["frame"], got["pass"]) == (1, 1, 1)
+
+
+def test_play_runs_at_the_machines_speeds(em703_exe, tmp_path, browser) -> None:
+    """Played at x10 and x100 for a second and a half, a tape gets as far as
+    the machine would in 10 or 100 times that: 5.5 m/min on lines and travel,
+    1.5 m/min on arcs. Never further (the page's clock cannot run ahead of
+    the browser's), and not much less (a loaded machine may lose frames)."""
+    lines = encode([Frame(dx=1000, cyc=200, k=10), Frame(dx=-1000, k=20)])
+    circles = encode([Frame(x=1000, cyc=200, k=11), Frame(x=1000, k=11)])
+    job = write_job(tmp_path, "PLAY", {"small": lines, "cond": circles}, {})
+    open_page(browser, page_of(em703_exe, job, tmp_path / "play.html"))
+    for key, speed, minutes in (("small", 10, 10 / 5500), ("cond", 100, 2 * math.pi * 10 / 1500)):
+        state, ms = browser.execute_async_script(
+            "var done = arguments[2]; em703.select(arguments[0]);"
+            "var t0 = performance.now(); em703.play(arguments[1]);"
+            "setTimeout(function () { em703.pause(); var s = em703.state();"
+            "  done([s, performance.now() - t0]); }, 1500);", key, speed)
+        most = ms / 60000 * speed / minutes            # frames the machine runs in that time
+        assert 0.25 * most <= state["executed"] <= most + 1e-6, (key, state["executed"], most)
+        assert not state["done"] and not browser.execute_script("return em703.playing()")
