@@ -80,7 +80,7 @@ module em703_page
         '  </section>', &
         '</main>']
 
-    character(len=100), parameter :: PAGE_TAIL(567) = [character(len=100) :: &
+    character(len=100), parameter :: PAGE_TAIL(571) = [character(len=100) :: &
         '<script>', &
         '// The EM-703 coordinatograph in the page: the tapes of a job sheet, decoded', &
         '// by em703 (the page reads the frames and the rows it was given, it never', &
@@ -612,7 +612,11 @@ module em703_page
         '  $(''play'').addEventListener(''click'', function () { if (playing) pause(); else play(); });', &
         '  $(''fwd'').addEventListener(''click'', function () { pause(); step(1); });', &
         '  $(''back'').addEventListener(''click'', function () { pause(); seek(machine.executed - 1); });', &
-        '  $(''go'').addEventListener(''click'', function () { pause(); seek($(''goto'').value); });', &
+        '  $(''go'').addEventListener(''click'', function () {', &
+        '    var n = $(''goto'').value;            // read before pause() shows the state in the box', &
+        '    pause();', &
+        '    seek(n);', &
+        '  });', &
         '  $(''reset'').addEventListener(''click'', function () { pause(); seek(0); });', &
         '  $(''speed'').addEventListener(''change'', function () { setSpeed($(''speed'').value); });', &
         '  $(''cyr'').addEventListener(''change'', function () {', &

@@ -504,3 +504,19 @@ def test_play_runs_at_the_machines_speeds(em703_exe, tmp_path, browser) -> None:
         most = ms / 60000 * speed / minutes            # frames the machine runs in that time
         assert 0.25 * most <= state["executed"] <= most + 1e-6, (key, state["executed"], most)
         assert not state["done"] and not browser.execute_script("return em703.playing()")
+
+
+def test_the_go_button_runs_to_the_executed_frame_typed(em703_exe, tmp_path, browser) -> None:
+    """The frame box and go: the tape runs (forward or back) to the number
+    typed, not to where it already is."""
+    saw = encode([Frame(dx=300, dy=400, cyc=8, k=10), Frame(dx=100, dy=-400, k=10),
+                  Frame(dx=-3200, k=20)])
+    job = write_job(tmp_path, "GO", {"small": saw}, {})
+    open_page(browser, page_of(em703_exe, job, tmp_path / "go.html"))
+    goto = browser.find_element("id", "goto")
+    for n in (16, 3, 17, 0):
+        goto.clear()
+        goto.send_keys(str(n))
+        browser.find_element("id", "go").click()
+        assert browser.execute_script("return em703.state()")["executed"] == n
+        assert goto.get_attribute("value") == str(n)

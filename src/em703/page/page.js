@@ -528,7 +528,11 @@
   $('play').addEventListener('click', function () { if (playing) pause(); else play(); });
   $('fwd').addEventListener('click', function () { pause(); step(1); });
   $('back').addEventListener('click', function () { pause(); seek(machine.executed - 1); });
-  $('go').addEventListener('click', function () { pause(); seek($('goto').value); });
+  $('go').addEventListener('click', function () {
+    var n = $('goto').value;            // read before pause() shows the state in the box
+    pause();
+    seek(n);
+  });
   $('reset').addEventListener('click', function () { pause(); seek(0); });
   $('speed').addEventListener('change', function () { setSpeed($('speed').value); });
   $('cyr').addEventListener('change', function () {
