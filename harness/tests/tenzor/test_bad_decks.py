@@ -39,6 +39,14 @@ CASES = [
     ("blank-inside", [P, card(c1="M", c31="   1 2.50 ", c56="   10")], 6, 35, "BLANK INSIDE"),
     ("not-right-justified", [P, card(c1="M", c31="1250      ", c56="   10")], 6, 35, "RIGHT-JUSTIFY"),
     ("third-decimal", [P, card(c1="M", c31="    1.255 ", c56="   10")], 6, 39, "MORE THAN 2 DECIMALS"),
+    # a sign only leads the number: a trailing minus (an accounting habit) is
+    # not a negative number, and ':' (the code after '9') is not a digit
+    ("trailing-minus", [P, card(c1="M", c31="    12.00-", c56="   10")], 6, 40,
+     "DX IN COLS 31-40: '-' IS NOT PART OF A NUMBER"),
+    ("sign-inside", [P, card(c1="M", c31="    1-2.00", c56="   10")], 6, 36,
+     "DX IN COLS 31-40: '-' IS NOT PART OF A NUMBER"),
+    ("colon-after-nine", [P, card(c1="M", c31="     1:.00", c56="   10")], 6, 37,
+     "DX IN COLS 31-40: ':' IS NOT PART OF A NUMBER"),
     ("bad-k", [P, card(c1="M", c31=f10("1.00"), c56="   15")], 6, 56, "K 15 IS NOT A COMMAND"),
     ("blank-k", [P, card(c1="M", c31=f10("1.00"))], 6, 60, "K IN COLS 56-60 IS BLANK"),
     ("cyc-one", [P, card(c1="M", c31=f10("1.00"), c51="    1", c56="   10")], 6, 51, "CYC MUST BE 2 OR MORE"),
@@ -54,6 +62,8 @@ CASES = [
     ("line-too-long", [P, "M" + " " * 85], 6, 81, "A CARD HAS AT MOST 80 COLUMNS"),
     ("tab", [P, "M\t" + " " * 20], 6, 2, "TAB CHARACTER"),
     ("non-ascii", [P, "M  \u0416"], 6, 4, "IS NOT A CARD CHARACTER"),
+    ("delete", [P, "M  \x7f"], 6, 4,
+     "BYTE 127 IS NOT A CARD CHARACTER; EXPECTED PRINTABLE ASCII (32-126)"),
     ("unknown-type", [P, card(c1="Q")], 6, 1, "UNKNOWN CARD TYPE 'Q'"),
     ("lower-case-type", [P, card(c1="m", c31=f10("1.00"), c56="   10")], 6, 1, "LOWER CASE"),
     ("no-type", [P, card(c11=f10("1.00"))], 6, 1, "NO CARD TYPE IN COL 1"),
@@ -73,6 +83,12 @@ CASES = [
      "PAD SIZE 0.30 MM IS SMALLER THAN TOOL W1 0.50 MM"),
     ("rect-pad-too-thin", [P, card(c1="D", c31="    1.00", c39="    0.40")], 6, 39, "SMALLER THAN TOOL W1"),
     ("row-without-step", [P, card(c1="D", c31="    1.00", c47="   4")], 6, 51, "A ROW OF N PADS NEEDS A STEP"),
+    ("row-of-two-without-step", [P, card(c1="D", c31="    1.00", c47="   2")], 6, 51,
+     "A ROW OF N PADS NEEDS A STEP"),
+    # a pad's size is the larger of W and H: 0.60 x 3.00 mm is a large pad
+    # (DMAX 2.00), drawn with W2 = 1.00 mm, which is wider than it
+    ("tall-pad-thinner-than-w2", [P, card(c1="D", c31="    0.60", c39="    3.00")], 6, 31,
+     "PAD SIZE 0.60 MM IS SMALLER THAN TOOL W2 1.00 MM OF THE LARGE-PAD TAPE"),
     ("pad-without-size", [P, card(c1="D", c11=f10("1.00"))], 6, 31, "PAD SIZE W IN COLS 31-38"),
     ("plus-without-l", [P, card(c1="+", c11=f10("1.00"))], 6, 1, "+ CARD WITH NO CONDUCTOR OPEN"),
     ("zero-length-conductor", [P, card(c1="L", c11=f10("1.00")), card(c1="+", c11=f10("1.00"))], 6, 11,
@@ -95,6 +111,12 @@ CASES = [
     ("coordinate-beyond-any-field", [P, card(c1="D", c11=f10("130000.00"), c31="    1.00")], 6, 11,
      "OFF THE FIELD AT EVERY SCALE"),
     ("ten-digits", [P, card(c1="D", c11="9999999999", c31="    1.00")], 6, 11,
+     "X IN COLS 11-20: NUMBER TOO LARGE; AT MOST 9999999.99"),
+    # nine digits are a number however the point splits them: 9999999.9 is
+    # 9999999.90 mm (off the field), not too large to read
+    ("nine-digits-one-decimal", [P, card(c1="D", c11=" 9999999.9", c31="    1.00")], 6, 11,
+     "X IS MORE THAN 120000.00 MM FROM THE START POINT: OFF THE FIELD AT EVERY SCALE"),
+    ("ten-digits-one-decimal", [P, card(c1="D", c11="10000000.0", c31="    1.00")], 6, 11,
      "X IN COLS 11-20: NUMBER TOO LARGE; AT MOST 9999999.99"),
     ("pad-beyond-any-field", [P, card(c1="D", c11=f10("10.00"), c31="99999999")], 6, 31,
      "W IS MORE THAN 120000.00 MM: LARGER THAN THE FIELD AT EVERY SCALE"),
@@ -134,7 +156,7 @@ def test_bad_card_is_reported_and_stops_only_its_package(run_tenzor, cards, card
 #: stays on the machine's field, which verify checks on the tapes TENZOR
 #: punches, not on the cards.
 THE_MACHINES = {"leaves-field", "leaves-field-at-scale", "coordinate-beyond-any-field",
-                "pad-beyond-any-field"}
+                "pad-beyond-any-field", "nine-digits-one-decimal"}
 
 
 def test_the_oracle_refuses_each_bad_card_at_the_same_card():
