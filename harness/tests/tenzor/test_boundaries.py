@@ -196,3 +196,124 @@ def test_the_last_pad_of_a_row_may_reach_exactly_120000_mm(run_tenzor, axis, pas
     col = 51 if axis == "x" else 61
     said = f"CARD 2 COL {col}: THE LAST PAD OF THE ROW IS MORE THAN 120000.00 MM" in err
     assert said == bool(past), err
+
+
+# ---------------------------------------------------------------------------
+# The P card's ranges: each limit is a value the card takes.
+# ---------------------------------------------------------------------------
+@pytest.mark.parametrize("field,col,limit,fragment", [
+    ("x0", 11, 120_000, "X0 IS OFF THE 1200 X 1200 MM FIELD; EXPECTED 0 TO 1200.00"),
+    ("y0", 21, 120_000, "Y0 IS OFF THE 1200 X 1200 MM FIELD; EXPECTED 0 TO 1200.00"),
+    ("w1", 31, 2_000, "TOOL W1 OUT OF RANGE; A TOOL IS 0.01 TO 20.00 MM WIDE"),
+    ("w2", 39, 2_000, "TOOL W2 OUT OF RANGE; A TOOL IS 0.01 TO 20.00 MM WIDE"),
+    ("w3", 47, 2_000, "TOOL W3 OUT OF RANGE; A TOOL IS 0.01 TO 20.00 MM WIDE"),
+    ("dmax", 55, 120_000, "DMAX OUT OF RANGE; THE SMALL-PAD LIMIT IS 0.01 TO 1200.00 MM"),
+])
+@pytest.mark.parametrize("past", [0, 1])
+def test_the_p_cards_fields_may_reach_their_limits(run_tenzor, field, col, limit, fragment, past):
+    """A start point on the field's edge (1200.00 mm), a tool of 20.00 mm and
+    a DMAX of 1200.00 mm are taken; one hundredth more is refused at the
+    field's first column (docs/CARDS.md, "P")."""
+    # the one frame goes back from the start point when it stands on the edge
+    back = -100 if field in ("x0", "y0") else 100
+    frame = cards.m_card(dx=back if field != "y0" else None, dy=back if field == "y0" else None)
+    body = [cards.p_card(**{field: limit + past}), frame]
+    deck = cards.deck([cards.CardPackage("LIMIT", body)], envelope=False)
+    proc, out = run_tenzor(deck)
+    err = proc.stderr.decode()
+    if past:
+        assert proc.returncode == 1
+        assert f"TENZOR ERROR CARD 2 COL {col}: {fragment}" in err, err
+        assert not list(out.glob("*.ptp"))
+    else:
+        assert proc.returncode == 0, err
+        assert err == ""
+        assert (out / "LIMIT-cond.ptp").exists()
+
+
+MACHINE_SCALES = [(1, 100), (1, 10), (1, 5), (1, 2), (1, 1), (2, 1), (5, 1), (50, 1), (100, 1)]
+
+
+@pytest.mark.parametrize("scale", MACHINE_SCALES + [(20, 1), (10, 1), (1, 50), (1, 20), (3, 1),
+                                                    (100, 100), (2, 2)])
+def test_the_scale_is_one_of_the_machines_nine(run_tenzor, scale):
+    """The scale is one of 1:100, 1:10, 1:5, 1:2, 1:1, 2:1, 5:1, 50:1, 100:1
+    (docs/CARDS.md, "P"), written as the machine's: 2:2 is not 1:1."""
+    body = [cards.p_card(scale=scale), cards.m_card(dx=100)]
+    deck = cards.deck([cards.CardPackage("SCALE", body)], envelope=False)
+    proc, _ = run_tenzor(deck)
+    err = proc.stderr.decode()
+    if scale in MACHINE_SCALES:
+        assert proc.returncode == 0, err
+    else:
+        assert proc.returncode == 1
+        assert "TENZOR ERROR CARD 2 COL 63: SCALE IS NOT ONE OF THE MACHINE'S: 1:100 1:10 1:5 " \
+               "1:2 1:1 2:1 5:1 50:1 100:1" in err, err
+
+
+# ---------------------------------------------------------------------------
+# Pads: a side as wide as its tool is drawn; a row's N has four digits.
+# ---------------------------------------------------------------------------
+@pytest.mark.parametrize("w,h,col", [(200, 50, 0), (200, 49, 39), (50, 200, 0), (49, 200, 31)])
+def test_a_rectangular_pad_may_be_as_narrow_as_its_tool(run_tenzor, w, h, col):
+    """A 2.00 x 0.50 mm pad drawn with a 0.50 mm tool is one stroke; 0.49 mm
+    is smaller than the tool, an error at the side's column."""
+    body = [cards.p_card(), cards.d_card(1000, 1000, w, h)]
+    deck = cards.deck([cards.CardPackage("THIN", body)], envelope=False)
+    proc, out = run_tenzor(deck)
+    err = proc.stderr.decode()
+    if col:
+        assert proc.returncode == 1
+        assert f"TENZOR ERROR CARD 3 COL {col}: PAD SIZE 0.49 MM IS SMALLER THAN TOOL W1 " \
+               "0.50 MM OF THE SMALL-PAD TAPE" in err, err
+    else:
+        assert proc.returncode == 0, err
+        frames = list(tape.decode((out / "THIN-small.ptp").read_bytes()).frames)
+        drawn = [(f.dx, f.dy) for f in frames if f.k == 10]
+        assert drawn == ([(150, 0)] if h == 50 else [(0, 150)]), frames
+
+
+@pytest.mark.parametrize("n", [2, 3, 4, 1234])
+def test_a_row_of_pads_is_one_cycle_from_three_pads_on(run_tenzor, n):
+    """A row of N dots is the dot, then the step and the dot run N - 1 times:
+    a cycle from N - 1 = 2 on (CYC 1 is not a cycle), so a row of three is
+    three dots, not two. N is I4 in cols 47-50: all four digits count."""
+    body = [cards.p_card(), cards.d_card(100, 100, 50, n=n, sx=50)]
+    deck = cards.deck([cards.CardPackage("ROW", body)], envelope=False)
+    proc, out = run_tenzor(deck)
+    assert proc.returncode == 0, proc.stderr.decode()
+    frames = list(tape.decode((out / "ROW-small.ptp").read_bytes()).frames)
+    dot = tape.Frame(0, 0, 0, 0, 0, 10)
+    assert frames == [tape.Frame(0, 0, 100, 100, 0, 20), dot,
+                      tape.Frame(0, 0, 50, 0, n - 1 if n >= 3 else 0, 20), dot,
+                      tape.Frame(0, 0, -100 - 50 * (n - 1), -100, 0, 20)]
+
+
+# ---------------------------------------------------------------------------
+# Arcs: the largest radius of the machine is 10 m, itself included.
+# ---------------------------------------------------------------------------
+@pytest.mark.parametrize("kind", ["O", "A", "M"])
+@pytest.mark.parametrize("past", [0, 1])
+def test_an_arc_of_exactly_ten_metres_is_drawn(run_tenzor, kind, past):
+    """Radius 10000.00 mm is the machine's largest arc (drawn here at 1:100,
+    100 mm about a start point in the middle of the field); 10000.01 mm is
+    refused (docs/CARDS.md, "O", "M")."""
+    r = 1_000_000 + past
+    if kind == "O":
+        card, col = cards.o_card("+", 0, 0, r), 31
+    elif kind == "A":
+        card, col = cards.a_card("+", 0, 0, 0, r, r, 0), 31
+    else:
+        card, col = cards.m_card(x=-r, dx=r, dy=r, k=13), 11
+    body = [cards.p_card(60_000, 60_000, scale=(1, 100)), card]
+    deck = cards.deck([cards.CardPackage("BIG", body)], envelope=False)
+    proc, out = run_tenzor(deck)
+    err = proc.stderr.decode()
+    if past:
+        assert proc.returncode == 1
+        assert f"TENZOR ERROR CARD 3 COL {col}: RADIUS OVER 10 M, THE LARGEST ARC OF THE " \
+               "MACHINE" in err, err
+    else:
+        assert proc.returncode == 0, err
+        frames = list(tape.decode((out / "BIG-cond.ptp").read_bytes()).frames)
+        assert [math.hypot(f.x, f.y) for f in frames if f.k in (11, 13)] == [r], frames
