@@ -128,6 +128,13 @@ def test_data_in_unread_columns_is_a_warning_and_changes_nothing(run_tenzor, car
     assert tapes(out) == tapes(ref_out)
     listing = (out / "BOARD.lst").read_text()
     assert f" *** TENZOR WARNING CARD {cardno} {label} {cols}:" in listing
+    # under the card's echo, a caret under each column of the run (the card's
+    # column c is the listing's column 9 + c)
+    lines = listing.splitlines()
+    at = next(i for i, line in enumerate(lines) if f"WARNING CARD {cardno} " in line)
+    first, last = (int(c) for c in (cols.split("-") * 2)[:2])
+    assert lines[at - 2] == f"{cardno:8d} {cards[cardno - 3]}"
+    assert lines[at - 1].rstrip() == " " * (8 + first) + "^" * (last - first + 1)
     # the harness's strict reader refuses what TENZOR only warns of
     with pytest.raises(CardError, match=f"card {cardno}: columns"):
         parse_deck(deck(*cards))
