@@ -246,6 +246,24 @@ def test_charset(tmp_path: Path) -> None:
     assert [(v.line, v.col) for v in found] == [(6, 13), (7, 7)]
 
 
+def test_every_lower_case_letter_is_lower_case(tmp_path: Path) -> None:
+    """a to z, not a to y: a lower-case letter outside a string is F77-LOWER,
+    whichever it is."""
+    write(tmp_path, "sub.f", subroutine("SUB", [f"      {ch.upper()}{ch} = 1"
+                                                for ch in "abyz"]))
+    found = only(tmp_path, "F77-LOWER")
+    assert [(v.line, v.col) for v in found] == [(6, 8), (7, 8), (8, 8), (9, 8)]
+    assert found[3].message == "lower-case letter 'z' outside a character constant"
+
+
+def test_delete_is_not_printable(tmp_path: Path) -> None:
+    """DEL (octal 177) is no printable ASCII character, in a comment or a statement."""
+    write(tmp_path, "sub.f", subroutine("SUB", ["C     A RUBOUT \x7f HERE", "      I = 1 \x7f"]))
+    found = only(tmp_path, "F77-CHARSET")
+    assert [(v.line, v.col) for v in found] == [(6, 16), (7, 13)]
+    assert all("is not printable ASCII" in v.message for v in found)
+
+
 def test_lower_case(tmp_path: Path) -> None:
     write(tmp_path, "sub.f", subroutine("SUB", ["      i = 1", "      S = 'ok' // 'OK'",
                                                 "C     comments may be lower case"]))
@@ -272,6 +290,14 @@ def test_label_field(tmp_path: Path, line: str, col: int) -> None:
 def test_label_on_continuation(tmp_path: Path) -> None:
     write(tmp_path, "sub.f", subroutine("SUB", ["      I = 1 +", "   10+    2"]))
     assert [(v.line, v.col) for v in only(tmp_path, "F77-LABEL")] == [(7, 4)]
+
+
+def test_zero_in_column_6_is_an_initial_line(tmp_path: Path) -> None:
+    """A zero in column 6 marks an initial line, as a blank does (X3.9-1978,
+    3.2.2): it may carry a label, and it continues nothing."""
+    write(tmp_path, "sub.f", ["     0SUBROUTINE SUB", *subroutine("SUB", [
+        "      I = 1", "   200J = 2"])[2:]])
+    assert check_dir(tmp_path, compiler=None) == []
 
 
 def test_continuation_mark_not_f77(tmp_path: Path) -> None:
