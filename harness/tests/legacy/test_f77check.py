@@ -334,6 +334,7 @@ F90_SNIPPETS: list[tuple[list[str], str]] = [
     (["      IF (I < 1) J = 2"], "'<'"),
     (["      IF (I >= 1) J = 2"], "'>'"),
     (["      DO 10 WHILE (I .LT. 3)", "   10 CONTINUE"], "DO WHILE"),
+    (["      DO WHILE (I .LT. 3)", "      I = I + 1", "      END DO"], "DO WHILE"),
     (["      DO I = 1, 3", "      END DO"], "DO without a statement label"),
     (["      DO 10 I = 1, 3", "   10 ENDDO"], "END DO"),
     (["      DO", "   10 CONTINUE"], "DO without a loop control"),
@@ -368,6 +369,13 @@ def test_end_subroutine_is_fortran_90(tmp_path: Path) -> None:
     assert [v.message for v in found] == ["END SUBROUTINE"]
 
 
+def test_end_function_is_fortran_90(tmp_path: Path) -> None:
+    write(tmp_path, "ione.f", ["      INTEGER FUNCTION IONE(I)", "      IMPLICIT NONE",
+                               "      INTEGER I", "      IONE = I", "      END FUNCTION IONE"])
+    found = only(tmp_path, "F77-F90")
+    assert [(v.line, v.message) for v in found] == [(5, "END FUNCTION")]
+
+
 def test_blanks_do_not_hide_keywords(tmp_path: Path) -> None:
     write(tmp_path, "sub.f", subroutine("SUB", ["      DO 10 I = 1, 3", "   10 E N D D O"]))
     assert [v.message for v in only(tmp_path, "F77-F90")] == ["END DO"]
@@ -384,7 +392,9 @@ def test_strings_and_substrings_are_not_fortran_90(tmp_path: Path) -> None:
 
 @pytest.mark.parametrize("line", ["      INTEGER*4 K", "      REAL*8 X",
                                   "      DOUBLE COMPLEX Z",
-                                  "      PARAMETER K = 1"])
+                                  "      PARAMETER K = 1", "      LOGICAL*1 L",
+                                  "      COMPLEX*16 Z", "      NAMELIST /NL/ I, J",
+                                  "      BYTE K"])
 def test_extensions(tmp_path: Path, line: str) -> None:
     write(tmp_path, "sub.f", subroutine("SUB", [line]))
     assert len(only(tmp_path, "F77-EXT")) == 1
@@ -669,6 +679,24 @@ def test_fortran_90_intrinsics_are_caught(tmp_path: Path, expr: str) -> None:
     write(tmp_path, "cmone.f", subroutine("CMONE", [f"      I = {expr}"]))
     found = only(tmp_path, "F77-INTRINSIC")
     assert found[0].line == 6 and "not of FORTRAN 77" in found[0].message
+
+
+@pytest.mark.parametrize("expr", ["TRIM(S)", "ACHAR(65)", "REPEAT(S, 2)", "SCAN(S, 'A')",
+                                  "VERIFY(S, 'A')"])
+def test_fortran_90_character_intrinsics_are_caught(tmp_path: Path, expr: str) -> None:
+    """The string functions of Fortran 90 that a FORTRAN 77 routine is most
+    tempted by (CMTRIM is there because LEN_TRIM and TRIM are not); gfortran
+    -std=legacy takes them all, so nothing but F77-INTRINSIC would see them."""
+    write(tmp_path, "cmone.f", subroutine("CMONE", [f"      S = S // {expr}"]))
+    found = only(tmp_path, "F77-INTRINSIC")
+    assert [(v.line, v.col) for v in found] == [(6, 16)]
+    assert found[0].message == f"{expr[:expr.index('(')]} is an intrinsic function of " \
+                               "Fortran 90, not of FORTRAN 77"
+
+
+def test_a_long_fortran_90_intrinsic_is_an_intrinsic_not_only_a_long_name(tmp_path) -> None:
+    write(tmp_path, "cmone.f", subroutine("CMONE", ["      S = ADJUSTL(S)"]))
+    assert rules(tmp_path) == {"F77-INTRINSIC", "F77-NAME"}
 
 
 def test_a_declared_function_of_the_same_name_is_not_an_intrinsic(tmp_path: Path) -> None:
