@@ -602,6 +602,37 @@ def test_a_copy_differing_from_the_master_is_caught(tmp_path: Path, k: int, chan
                in v.message and v.line == 6 + k for v in found), found
 
 
+@pytest.mark.parametrize("copy, line, expect", [
+    (COPY[:5], 11, "'SAVE /CMPAD/'"),                            # the SAVE left out
+    ([*COPY, "      INTEGER NXTRA"], 12, "'the end of the copy'"),  # a line more
+])
+def test_a_copy_shorter_or_longer_than_the_master_is_caught(tmp_path: Path, copy: list[str],
+                                                            line: int, expect: str) -> None:
+    """Line for line means as many lines: a copy that stops before the
+    master's SAVE (the block may become undefined, legacy/README.md) or
+    goes on after it is not the master."""
+    master_tree(tmp_path, copy)
+    found = only(tmp_path, "F77-COMMON")
+    assert [(v.line, v.message) for v in found] == [
+        (line, f"copy of /CMPAD/ differs from {tmp_path / 'COMMON.inc'} (line "
+               f"{line - 5} of the section): expected {expect}")], found
+
+
+@pytest.mark.parametrize("stmt", ["      COMMON /CMPAD/ NPAD, IPX",
+                                  "      COMMON/CMPAD/NPAD,IPX"])
+def test_a_common_outside_a_copy_is_caught_however_it_is_spaced(tmp_path: Path,
+                                                                stmt: str) -> None:
+    """Blanks are insignificant in FORTRAN 77: a COMMON statement spelt
+    without them is still outside a copy of its master text."""
+    write(tmp_path, "COMMON.inc", MASTER_TEXT)
+    write(tmp_path, "cmtwo.f", subroutine("CMTWO", [
+        "      INTEGER NPAD, IPX(400)", stmt, "      NPAD = 0"]))
+    found = only(tmp_path, "F77-COMMON")
+    assert [(v.line, v.col, v.message) for v in found] == [
+        (7, 7, f"COMMON /CMPAD/ outside a copy of its master text (/CMPAD/ of "
+               f"{tmp_path / 'COMMON.inc'})")], found
+
+
 def test_a_block_without_master_and_a_common_outside_a_copy_are_caught(tmp_path: Path) -> None:
     write(tmp_path, "COMMON.inc", MASTER_TEXT)
     write(tmp_path, "cmone.f", subroutine("CMONE", [
