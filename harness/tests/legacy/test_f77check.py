@@ -199,6 +199,17 @@ def test_a_block_the_master_does_not_save_is_named(tmp_path: Path) -> None:
     (lambda t: t.replace("      RETURN\n", "      CALL TZGCLR\n      RETURN\n", 1),
      "F77-LAYER", "call", "CMTRIM, a shared routine, calls TZGCLR of TENZOR: give it as "
                          "an argument, as CMASSM is given MTITEM or MLITEM"),
+    (lambda t: t.replace("C     SOURCE:", "C     ORIGIN:"), "F77-HEADER", "title",
+     "no 'C     SOURCE:' line in the header"),
+    (lambda t: t.replace("(SHARED)", "", 1), "F77-HEADER", "title",
+     "the header says (no program): CMTRIM is of SHARED, as its name says"),
+    (lambda t: t.replace("C     CMTRIM - ", "C     CMITOA - "), "F77-HEADER", "title",
+     "the title comment names CMITOA, the routine is CMTRIM"),
+    (lambda t: t.replace("C     END OF CMTRIM", "C     END OF CMITOA"), "F77-HEADER", "end",
+     "the routine's END is not preceded by 'C     END OF CMTRIM'"),
+    (lambda t: t.replace("      RETURN\n", "      CALL M703T\n      RETURN\n", 1),
+     "F77-LAYER", "call", "CMTRIM, a shared routine, calls M703T of M703T: give it as "
+                         "an argument, as CMASSM is given MTITEM or MLITEM"),
 ])
 def test_the_header_and_the_layers_of_an_indexed_directory(tmp_path, edit, rule, at,
                                                            says) -> None:
@@ -208,9 +219,10 @@ def test_the_header_and_the_layers_of_an_indexed_directory(tmp_path, edit, rule,
     path = root / "cmtrim.f"
     path.write_text(edit(path.read_text()))
     lines = path.read_text().splitlines()
-    title = next(k for k, ln in enumerate(lines, 1) if ln.startswith("C     CMTRIM - "))
+    title = next(k for k, ln in enumerate(lines, 1) if re.match(r"C     CM[A-Z]+ - ", ln))
     end = next(k for k, ln in enumerate(lines, 1) if ln == "      END")
-    call = next((k for k, ln in enumerate(lines, 1) if "CALL TZGCLR" in ln), 0)
+    call = next((k for k, ln in enumerate(lines, 1) if re.search(r"CALL (TZGCLR|M703T)", ln)),
+                0)
     line = {"title": title, "end": end, "call": call}[at]
     found = [(Path(v.path).name, v.line, v.rule, v.message)
              for v in check_dir(root, compiler=None) if v.rule in ("F77-HEADER", "F77-LAYER")]
