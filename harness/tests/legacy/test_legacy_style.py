@@ -52,3 +52,38 @@ def test_a_stale_index_is_caught(tmp_path):
     problems = index_problems(tmp_path)
     assert len(problems) == 1 and "out of date" in problems[0] and "THE LENGTH OF A TEXT" \
         in problems[0], problems
+
+
+def test_a_routine_tenzor_does_not_call_is_named(tmp_path):
+    """The call tree starts at TENZOR; a routine it never reaches is named
+    under the tree, so the index cannot hide it."""
+    for name in ("README.md", "cmitoa.f", "cmtrim.f"):
+        shutil.copy(LEGACY / name, tmp_path / name)
+    index = legacy_index(tmp_path)
+    assert "```\nTENZOR\n```\n\nNot called from TENZOR: CMITOA, CMTRIM.\n" in index, index
+
+
+def test_an_index_whose_call_tree_is_in_another_order_is_stale(tmp_path):
+    """The index is compared line for line, in order: the same lines in
+    another order (TENZOR now calls CMITOA before CMTRIM) are out of date."""
+    for name in ("README.md", "cmitoa.f", "cmtrim.f"):
+        shutil.copy(LEGACY / name, tmp_path / name)
+    calls = ["      CALL CMTRIM(STR, L)", "      CALL CMITOA(L, STR, L)"]
+    tenzor = tmp_path / "tenzor.f"
+
+    def write_tenzor(body):
+        tenzor.write_text("\n".join([
+            "C     TENZOR - THE ROOT OF THE TEST'S TREE   (TENZOR)",
+            "C     SOURCE:  THE TESTS.", "C     CHANGES: SEE GIT.",
+            "      SUBROUTINE TENZOR", "      IMPLICIT NONE", "      CHARACTER*8 STR",
+            "      INTEGER L", "      STR = 'AB'", *body, "      RETURN",
+            "C     END OF TENZOR", "      END", ""]))
+
+    write_tenzor(calls)
+    write_index(tmp_path)
+    assert index_problems(tmp_path) == []
+    assert "TENZOR\n  CMTRIM\n  CMITOA\n" in legacy_index(tmp_path)
+    write_tenzor(calls[::-1])
+    problems = index_problems(tmp_path)
+    assert len(problems) == 1 and "out of date" in problems[0] and "'  CMTRIM'" in problems[0] \
+        and "'  CMITOA'" in problems[0], problems
