@@ -21,8 +21,9 @@ constants are '...' with '' for a quote; Hollerith constants are not
 supported (the re-creation does not use them).  Symbolic names are collected
 from declarations (type, DIMENSION, COMMON, PARAMETER, EXTERNAL, INTRINSIC,
 SAVE), program unit headers, CALL and ENTRY, and from the expressions of
-assignments, IF conditions, DO controls and CALL arguments; the gfortran step
-(``F77-DECL``) makes sure every variable is declared.
+assignments, IF conditions, DO controls and CALL arguments (the intrinsic
+functions of Fortran 90 are looked for in every statement but FORMAT); the
+gfortran step (``F77-DECL``) makes sure every variable is declared.
 """
 
 from __future__ import annotations
@@ -450,12 +451,15 @@ class _FileChecker:
             self.add(*st.at(si), "F77-NAME", f"{what} {name} has {len(name)} "
                                              f"characters (at most {MAX_NAME})")
 
-    def _expr_names(self, st: _Statement, a: int, b: int) -> None:
+    def _expr_names(self, st: _Statement, a: int, b: int, names: bool = True) -> None:
+        """The names of s[a:b]: at most six characters (with ``names``), no
+        intrinsic function of Fortran 90, no array constructor."""
         masked = _DOTTED.sub(lambda m: " " * len(m.group()), st.s[a:b])
         unit = self.unit
         for m in _EXPR_NAME.finditer(masked):
             name = m.group()
-            self._name(st, a + m.start(), name, "name")
+            if names:
+                self._name(st, a + m.start(), name, "name")
             if (name in F90_INTRINSICS and masked[m.end():m.end() + 1] == "("
                     and unit is not None and name not in unit.types
                     and name not in unit.dims):
@@ -614,6 +618,8 @@ class _FileChecker:
             if t.startswith(keyword):
                 handler(st, off, off + len(keyword))
                 return
+        if not t.startswith("FORMAT("):     # READ, WRITE, PRINT, GO TO (...), ...:
+            self._expr_names(st, off, len(s), names=False)    # their functions
 
     def _type_statement(self, st: _Statement, off: int, keyword: str) -> None:
         s = st.s

@@ -737,6 +737,28 @@ def test_fortran_90_character_intrinsics_are_caught(tmp_path: Path, expr: str) -
                                "Fortran 90, not of FORTRAN 77"
 
 
+@pytest.mark.parametrize("body, line, col", [
+    (["      WRITE (*, '(A)') TRIM(S)"], 6, 24),
+    (["      PRINT *, IACHAR(S(1:1))"], 6, 16),
+    (["      READ (*, *) J", "      WRITE (*, *) IAND(J, 7)"], 7, 20),
+    (["      IF (I .GT. 0) WRITE (*, *) ACHAR(I)"], 6, 34),
+    (["      GO TO (10, 20), MODULO(I, 2) + 1", "   10 CONTINUE", "   20 CONTINUE"], 6, 23),
+])
+def test_fortran_90_intrinsics_are_caught_in_every_statement(tmp_path: Path, body, line,
+                                                             col) -> None:
+    """Not only in assignments, IF conditions, DO controls and CALLs: an
+    output list, a computed GO TO (gfortran -std=legacy takes them all)."""
+    write(tmp_path, "cmone.f", subroutine("CMONE", body))
+    found = only(tmp_path, "F77-INTRINSIC")
+    assert [(v.line, v.col) for v in found] == [(line, col)], found
+
+
+def test_a_format_is_not_an_array_constructor(tmp_path: Path) -> None:
+    write(tmp_path, "cmone.f", subroutine("CMONE", ["      WRITE (*, 100) I",
+                                                    "  100 FORMAT (/1X, I5, 2(1X, I3)/)"]))
+    assert check_dir(tmp_path, compiler=None) == []
+
+
 def test_a_long_fortran_90_intrinsic_is_an_intrinsic_not_only_a_long_name(tmp_path) -> None:
     write(tmp_path, "cmone.f", subroutine("CMONE", ["      S = ADJUSTL(S)"]))
     assert rules(tmp_path) == {"F77-INTRINSIC", "F77-NAME"}
