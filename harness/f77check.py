@@ -282,6 +282,7 @@ class _Unit:
     types: dict[str, str] = field(default_factory=dict)
     dims: dict[str, str] = field(default_factory=dict)
     commons: dict[str, tuple[int, int, list[str]]] = field(default_factory=dict)
+    common_lines: list[tuple[str, int]] = field(default_factory=list)  # block, line
     params: list[tuple[str, str, int, int]] = field(default_factory=list)
 
 
@@ -706,6 +707,8 @@ class _FileChecker:
                 self.add(*st.at(i), "F77-BLKCOM", "blank COMMON (name every "
                                                   "COMMON block)")
             line, col = st.at(off)
+            if block:
+                unit.common_lines.append((block, line))
             entry = unit.commons.setdefault(block, (line, col, []))
             for a, b in _split_top(s, i, end):
                 name = self._entity(st, a, b, None)
@@ -835,7 +838,7 @@ MASTER = "COMMON.inc"
 _HEAD = re.compile(r"^C     ---- /([A-Z][A-Z0-9]*)/")
 _DECL = re.compile(r"^      (INTEGER|REAL|DOUBLE ?PRECISION|CHARACTER|LOGICAL|PARAMETER|"
                    r"COMMON|SAVE|EQUIVALENCE)\b")
-_COMMON_STMT = re.compile(r"^      COMMON */([A-Z][A-Z0-9]*)/")
+_COMMON_STMT = re.compile(r"^      COMMON */ *([A-Z][A-Z0-9]*) */")
 
 
 def common_copies(lines: list[str]) -> list[tuple[str, int, int]]:
@@ -885,12 +888,18 @@ def _blocks_of(section: list[str]) -> set[str]:
 
 
 def master_checks(paths: Iterable[Path], master: dict[str, list[str]],
-                  master_name: str = MASTER) -> list[Violation]:
+                  master_name: str = MASTER,
+                  results: list[_FileResult] | None = None) -> list[Violation]:
     """Every copy is its master section line for line; every COMMON
-    statement is inside a copy of the section that declares its block."""
+    statement (as the reader finds it in ``results``, those of ``paths``:
+    blanks ignored, continuation lines joined) is inside a copy of the
+    section that declares its block."""
     owner = {b: name for name, sec in master.items() for b in _blocks_of(sec)}
     out: list[Violation] = []
-    for path in paths:
+    paths = list(paths)
+    if results is None:
+        results = [_FileChecker(p, str(p)).run() for p in paths]
+    for path, res in zip(paths, results):
         lines = path.read_text(encoding="ascii", errors="replace").splitlines()
         inside: set[int] = set()
         for name, a, b in common_copies(lines):
@@ -908,12 +917,11 @@ def master_checks(paths: Iterable[Path], master: dict[str, list[str]],
                 out.append(Violation(str(path), a + k + 1, 1, "F77-COMMON",
                                      f"copy of /{name}/ differs from {master_name} "
                                      f"(line {k + 1} of the section): expected {expect!r}"))
-        for n, line in enumerate(lines):
-            m = _COMMON_STMT.match(line)
-            if m and n not in inside:
-                where = f"/{owner[m.group(1)]}/" if m.group(1) in owner else "no section"
-                out.append(Violation(str(path), n + 1, 7, "F77-COMMON",
-                                     f"COMMON /{m.group(1)}/ outside a copy of its master "
+        for block, n in (x for unit in res.units for x in unit.common_lines):
+            if n - 1 not in inside:
+                where = f"/{owner[block]}/" if block in owner else "no section"
+                out.append(Violation(str(path), n, 7, "F77-COMMON",
+                                     f"COMMON /{block}/ outside a copy of its master "
                                      f"text ({where} of {master_name})"))
     return out
 
@@ -927,7 +935,7 @@ def save_problems(master: Path) -> list[Violation]:
     out: list[Violation] = []
     for _name, a, b in common_copies(lines):
         saved = {blk for line in lines[a:b + 1] if re.match(r"^      SAVE\b", line)
-                 for blk in re.findall(r"/([A-Z][A-Z0-9]*)/", line)}
+                 for blk in re.findall(r"/ *([A-Z][A-Z0-9]*) */", line)}
         for n in range(a, b + 1):
             m = _COMMON_STMT.match(lines[n])
             if m and m.group(1) not in saved:
@@ -1209,7 +1217,7 @@ def check_files(paths: Iterable[Path], compiler: str | None = "gfortran",
     results = [_FileChecker(p, str(p)).run() for p in paths]
     violations = [v for r in results for v in r.violations]
     if master is not None:
-        violations += master_checks(paths, read_master(master), str(master))
+        violations += master_checks(paths, read_master(master), str(master), results)
         violations += _cross_checks(results, commons=False)
     else:
         violations += _cross_checks(results)

@@ -631,18 +631,33 @@ def test_a_copy_shorter_or_longer_than_the_master_is_caught(tmp_path: Path, copy
 
 
 @pytest.mark.parametrize("stmt", ["      COMMON /CMPAD/ NPAD, IPX",
-                                  "      COMMON/CMPAD/NPAD,IPX"])
+                                  "      COMMON/CMPAD/NPAD,IPX",
+                                  "      COMMON / CMPAD / NPAD, IPX",
+                                  "      COMMON\n     1   /CMPAD/ NPAD, IPX"])
 def test_a_common_outside_a_copy_is_caught_however_it_is_spaced(tmp_path: Path,
                                                                 stmt: str) -> None:
     """Blanks are insignificant in FORTRAN 77: a COMMON statement spelt
     without them is still outside a copy of its master text."""
     write(tmp_path, "COMMON.inc", MASTER_TEXT)
     write(tmp_path, "cmtwo.f", subroutine("CMTWO", [
-        "      INTEGER NPAD, IPX(400)", stmt, "      NPAD = 0"]))
+        "      INTEGER NPAD, IPX(400)", *stmt.split("\n"), "      NPAD = 0"]))
     found = only(tmp_path, "F77-COMMON")
     assert [(v.line, v.col, v.message) for v in found] == [
         (7, 7, f"COMMON /CMPAD/ outside a copy of its master text (/CMPAD/ of "
                f"{tmp_path / 'COMMON.inc'})")], found
+
+
+def test_a_master_block_spelt_with_blanks_must_be_saved_too(tmp_path: Path) -> None:
+    """F77-SAVE reads the master's COMMON statements with the blanks FORTRAN
+    ignores: / CMPAD / is /CMPAD/, unsaved, and SAVE / CMPAD / saves it."""
+    text = [ln.replace("/CMPAD/", "/ CMPAD /") if ln.startswith("      ") else ln
+            for ln in MASTER_TEXT]
+    write(tmp_path, "COMMON.inc", [ln for ln in text if not ln.startswith("      SAVE")])
+    write(tmp_path, "cmuse.f", subroutine("CMUSE", ["      NPAD = 0"]))
+    found = [v for v in check_dir(tmp_path, compiler=None) if v.rule == "F77-SAVE"]
+    assert [(Path(v.path).name, v.line) for v in found] == [("COMMON.inc", 6)], found
+    write(tmp_path, "COMMON.inc", text)
+    assert [v for v in check_dir(tmp_path, compiler=None) if v.rule == "F77-SAVE"] == []
 
 
 def test_a_block_without_master_and_a_common_outside_a_copy_are_caught(tmp_path: Path) -> None:
