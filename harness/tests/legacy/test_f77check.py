@@ -647,11 +647,14 @@ def test_a_common_outside_a_copy_is_caught_however_it_is_spaced(tmp_path: Path,
                f"{tmp_path / 'COMMON.inc'})")], found
 
 
-def test_a_master_block_spelt_with_blanks_must_be_saved_too(tmp_path: Path) -> None:
+@pytest.mark.parametrize("was, spelt", [("/CMPAD/", "/ CMPAD /"),
+                                        ("COMMON /CMPAD/", "COMMON/CMPAD/")])
+def test_a_master_block_spelt_with_blanks_must_be_saved_too(tmp_path: Path, was: str,
+                                                            spelt: str) -> None:
     """F77-SAVE reads the master's COMMON statements with the blanks FORTRAN
-    ignores: / CMPAD / is /CMPAD/, unsaved, and SAVE / CMPAD / saves it."""
-    text = [ln.replace("/CMPAD/", "/ CMPAD /") if ln.startswith("      ") else ln
-            for ln in MASTER_TEXT]
+    ignores: / CMPAD / and COMMON/CMPAD/ are /CMPAD/, unsaved, and SAVE /
+    CMPAD / saves it."""
+    text = [ln.replace(was, spelt) if ln.startswith("      ") else ln for ln in MASTER_TEXT]
     write(tmp_path, "COMMON.inc", [ln for ln in text if not ln.startswith("      SAVE")])
     write(tmp_path, "cmuse.f", subroutine("CMUSE", ["      NPAD = 0"]))
     found = [v for v in check_dir(tmp_path, compiler=None) if v.rule == "F77-SAVE"]
