@@ -51,8 +51,8 @@ TENZOR = "$$(fpm run --runner echo tenzor 2>/dev/null | tail -n 1)"
 setup:
 	@bash scripts/setup.sh
 
-# (scripts/fpm_build.sh: fpm build, every program linked again from the objects
-# as they are, the tests too, whichever fpm command compiled them.)
+# (scripts/fpm_build.sh: fpm build with the test programs linked again from the
+# objects as they are, whichever fpm command compiled them.)
 build: setup
 	@bash scripts/fpm_build.sh >/dev/null
 

@@ -100,7 +100,8 @@ def main(argv: list[str] | None = None) -> int:
     parser = argparse.ArgumentParser(prog="python -m bench.html", description=__doc__.split(
         "\n\n")[0])
     parser.add_argument("--sizes", type=boards.sizes_argument, default=[10000, 100000],
-                        metavar="N,N,...", help="pad counts of the uniform boards (default 10000,100000)")
+                        metavar="N,N,...",
+                        help="pad counts of the uniform boards (default 10000,100000)")
     parser.add_argument("--out", type=Path, default=ROOT / "out" / "bench-html")
     args = parser.parse_args(argv)
     if shutil.which("chromedriver") is None or shutil.which("fpm") is None:
