@@ -23,6 +23,7 @@ import math
 import re
 from pathlib import Path
 
+import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
@@ -187,32 +188,28 @@ def test_random_tapes_are_grbl_programs(em703_exe, tmp_path_factory, frames, use
     _same_path_grbl(_grbl_events(text), _normalise(expected_events(frames)), str(frames))
 
 
-def test_an_arc_one_unit_off_its_circle_gets_a_centre_grbl_takes(em703_exe, tmp_path) -> None:
-    """X300 DX-300 DY-299 K13: the end is 0.01 mm inside the 3 mm circle;
-    LinuxCNC takes the tape's centre, GRBL would refuse it (error:33), so
-    the GRBL program moves the centre onto the chord's bisector."""
+@pytest.mark.parametrize("frame, linuxcnc_arc, grbl_arc", [
+    # X50 DX-50 DY-49 K13: the end is 0.01 mm inside the 0.5 mm circle
+    (dict(x=50, dx=-50, dy=-49, k=13), "G02 X-0.500 Y-0.490 I-0.500 J0.000",
+     "G02 X-0.500 Y-0.490"),
+    # X300 DX-88 DY213 K11: the end (2.12, 2.13) mm from the centre lies
+    # 0.0052 mm outside the 3 mm circle, less than a unit but more than both
+    # of GRBL's limits (0.005 mm, and 0.1 % of the radius, 0.003 mm); the
+    # centre on the bisector is rounded to 0.001 mm
+    (dict(x=300, dx=-88, dy=213, k=11), "N4 G03 X-0.880 Y2.130 I-3.000 J0.000 F1500\n",
+     "N4 G03 X-0.880 Y2.130 I-3.003 J0.006 F1500\n"),
+])
+def test_an_arc_off_its_circle_gets_a_centre_grbl_takes(em703_exe, tmp_path, frame,
+                                                        linuxcnc_arc, grbl_arc) -> None:
+    """An arc whose end is off its circle by less than a unit: LinuxCNC takes
+    the tape's centre, GRBL would refuse it (error:33), so the GRBL program
+    moves the centre onto the chord's bisector."""
     from harness.tape import Frame
     path = tmp_path / "off.ptp"
-    path.write_bytes(encode([Frame(x=50, dx=-50, dy=-49, k=13), Frame(k=20)]))
+    path.write_bytes(encode([Frame(**frame), Frame(k=20)]))
     linuxcnc = run(em703_exe, "gcode", path, check=0).stdout.decode()
-    assert "I-0.500 J0.000" in linuxcnc
+    assert linuxcnc_arc in linuxcnc
     assert "error:33" in " ".join(grbl_errors(linuxcnc.replace("%\n", "")))
     grbl = run(em703_exe, "gcode", "--dialect", "grbl", path, check=0).stdout.decode()
     assert grbl_errors(grbl) == []
-    assert "G02 X-0.500 Y-0.490" in grbl
-
-
-def test_an_arc_half_a_unit_off_its_circle_gets_a_centre_grbl_takes(em703_exe, tmp_path) -> None:
-    """X300 DX-88 DY213 K11: the end (2.12, 2.13) mm from the centre lies
-    0.0052 mm outside the 3 mm circle, less than a unit but more than both
-    of GRBL's limits (0.005 mm, and 0.1 % of the radius, 0.003 mm): GRBL
-    would refuse the tape's centre (error:33), so it moves onto the bisector."""
-    from harness.tape import Frame
-    path = tmp_path / "half.ptp"
-    path.write_bytes(encode([Frame(x=300, dx=-88, dy=213, k=11), Frame(k=20)]))
-    linuxcnc = run(em703_exe, "gcode", path, check=0).stdout.decode()
-    assert "N4 G03 X-0.880 Y2.130 I-3.000 J0.000 F1500\n" in linuxcnc
-    assert "error:33" in " ".join(grbl_errors(linuxcnc.replace("%\n", "")))
-    grbl = run(em703_exe, "gcode", "--dialect", "grbl", path, check=0).stdout.decode()
-    assert grbl_errors(grbl) == []
-    assert "N4 G03 X-0.880 Y2.130 I-3.003 J0.006 F1500\n" in grbl
+    assert grbl_arc in grbl
