@@ -62,17 +62,30 @@ def test_no_file_cites_what_a_clone_does_not_carry():
     assert not found, "citations outside the repository:\n" + "\n".join(found)
 
 
+def _slug(heading: str) -> str:
+    """A heading's anchor as GitHub makes it."""
+    return re.sub(r"[^\w\- ]", "", heading.strip().lower()).replace(" ", "-")
+
+
 @pytest.mark.parametrize("page", sorted(
     str(p.relative_to(ROOT)) for p in _tracked() if p.suffix == ".md"))
 def test_relative_links_of_a_page_resolve(page):
+    """A relative link names a file of the repository, and its #anchor, if
+    any, a heading of that page (CARDS.md#numbers; #numbers on the page)."""
     path = ROOT / page
     broken = []
     for target in LINK.findall(path.read_text(encoding="utf-8")):
-        if re.match(r"[a-z]+:", target) or target.startswith("#"):
-            continue  # a web address, a mail address, an anchor on the page
-        name = target.split("#", 1)[0]
-        if not (path.parent / name).exists():
+        if re.match(r"[a-z]+:", target):
+            continue  # a web address, a mail address
+        name, sep, anchor = target.partition("#")
+        dest = path.parent / name if name else path
+        if not dest.exists():
             broken.append(target)
+        elif sep and dest.suffix == ".md":
+            heads = {_slug(line.lstrip("#")) for line in
+                     dest.read_text(encoding="utf-8").splitlines() if line.startswith("#")}
+            if anchor not in heads:
+                broken.append(target)
     assert not broken, f"{page}: links to nothing: {broken}"
 
 
@@ -173,27 +186,3 @@ def test_the_section_pattern_reads_each_way_of_citing():
     ]:
         assert cited_sections(here, text, pages) == want, text
 
-
-def _slug(heading: str) -> str:
-    """A heading's anchor as GitHub makes it."""
-    return re.sub(r"[^\w\- ]", "", heading.strip().lower()).replace(" ", "-")
-
-
-@pytest.mark.parametrize("page", sorted(
-    str(p.relative_to(ROOT)) for p in _tracked() if p.suffix == ".md"))
-def test_anchors_of_links_resolve(page):
-    """A link to a section (CARDS.md#numbers) names a heading of that page."""
-    path = ROOT / page
-    broken = []
-    for target in LINK.findall(path.read_text(encoding="utf-8")):
-        name, sep, anchor = target.partition("#")
-        if not sep or re.match(r"[a-z]+:", target):
-            continue
-        dest = path.parent / name if name else path
-        if not dest.is_file() or dest.suffix != ".md":
-            continue                    # a missing file is the test above's
-        heads = {_slug(line.lstrip("#")) for line in dest.read_text(encoding="utf-8").splitlines()
-                 if line.startswith("#")}
-        if anchor not in heads:
-            broken.append(target)
-    assert not broken, f"{page}: links to headings that do not exist: {broken}"
