@@ -185,4 +185,3 @@ def test_the_section_pattern_reads_each_way_of_citing():
         ('C     SEE DOCS/PERFORMANCE.MD', []),
     ]:
         assert cited_sections(here, text, pages) == want, text
-
