@@ -95,7 +95,5 @@ def test_every_entry_point_stops_quietly(module) -> None:
     # tested above on one command of each kind): a main without it would
     # print BrokenPipeError's traceback under `| head`
     main = importlib.import_module(module).main
-    assert getattr(main, "__wrapped__", None) is not None, f"{module}.main is not guarded"
-    assert main.__code__ is not main.__wrapped__.__code__
-    assert main.__qualname__ == main.__wrapped__.__qualname__ == "main"
-    assert "quiet_when_output_closes" in main.__code__.co_qualname
+    assert main.__code__.co_qualname.startswith("quiet_when_output_closes."), \
+        f"{module}.main is not guarded"
