@@ -148,6 +148,38 @@ DROPPED_HITS = {
 G85_SLOT = re.compile(r"^[^;(]*G85")
 
 
+#: a line's coordinates, in the file's own notation: what comes before them
+#: (a G code, say), X, Y, and what follows
+_HIT = re.compile(r"^(?P<pre>[^XY;(]*)(?:X(?P<x>[+-]?[0-9.]+))?(?:Y(?P<y>[+-]?[0-9.]+))?"
+                  r"(?P<rest>.*)$")
+
+
+def _without_slots(lines: list[str], slots: set[int]) -> list[str]:
+    """The file's lines with each G85 slot (line numbers ``slots``, from 1)
+    blanked.  A slot leaves the drill at its end, and coordinates are modal:
+    a later line that leaves out X or Y means the slot end's.  Since
+    gerbonara no longer sees the slot, such a line is given that coordinate,
+    as the slot wrote it (the file's own number format), until a line gives
+    it again."""
+    out, carried = [], {}
+    for k, line in enumerate(lines, start=1):
+        if k in slots:
+            start, _, end = line.strip().partition("G85")
+            for part in (start, end):
+                m = _HIT.match(part)
+                carried.update({axis: m[axis] for axis in "xy" if m[axis] is not None})
+            out.append("")
+            continue
+        m = _HIT.match(line.strip())
+        if carried and (m["x"] is not None or m["y"] is not None):
+            x, y = m["x"] or carried.get("x"), m["y"] or carried.get("y")
+            line = (m["pre"] + ("" if x is None else "X" + x) + ("" if y is None else "Y" + y)
+                    + m["rest"])
+            carried = {}
+        out.append(line)
+    return out
+
+
 def _excellon_open(path: str | Path, text: str):
     """gerbonara's ExcellonFile.open (which also reads the format files some
     CAD tools write beside a drill file) on ``text`` instead of the file's
@@ -165,9 +197,7 @@ def read_drill(path: str | Path) -> tuple[list[Hole], int, list[int]]:
     """The holes of an Excellon file in file order, how many slots routed
     with M15/M16 it has, and the numbers of its lines that are G85 slots;
     the slots are left out.  A G85 line is blanked before gerbonara reads
-    the file, so that its line numbers stay the file's.  A hit after it that
-    leaves out a coordinate then takes it from the hit before the slot, not
-    from the slot's end (KiCad writes both coordinates of every hit)."""
+    the file, so that its line numbers stay the file's (``_without_slots``)."""
     from gerbonara.graphic_objects import Flash
     from gerbonara.utils import MM
     try:
@@ -175,9 +205,7 @@ def read_drill(path: str | Path) -> tuple[list[Hole], int, list[int]]:
         lines = text.splitlines()
         g85 = [k for k, line in enumerate(lines, start=1) if G85_SLOT.match(line.strip())]
         if g85:
-            blank = set(g85)
-            text = "\n".join("" if k in blank else line
-                             for k, line in enumerate(lines, start=1)) + "\n"
+            text = "\n".join(_without_slots(lines, set(g85))) + "\n"
         with warnings.catch_warnings(record=True) as said:
             warnings.simplefilter("always")
             x = _excellon_open(path, text)

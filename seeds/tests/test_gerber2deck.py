@@ -297,6 +297,37 @@ def test_g85_slots_are_left_out_and_named_by_their_line(tmp_path):
     assert sum(c.startswith("D") for c in drill.splitlines()) == 2, drill
 
 
+@pytest.mark.parametrize("after, hole", [
+    ("Y2.0", (8.0, 2.0)),                 # X left out: the slot's end X
+    ("X3.0", (3.0, 0.0)),                 # Y left out: the slot's end Y
+    ("X3.0Y4.0", (3.0, 4.0)),
+    ("T2\nY2.0", (8.0, 2.0)),             # a tool change between
+])
+def test_a_hit_after_a_slot_leaving_out_a_coordinate_takes_the_slots_end(tmp_path, after,
+                                                                          hole):
+    """Excellon's coordinates are modal and a slot leaves the drill at its
+    end: the hit after it that leaves out X or Y is there, not at the hit
+    before the slot. Before, the slot's line was only blanked, and such a
+    hole moved to the last hit's coordinate without a word."""
+    from seeds.gerber import read_drill
+    drl = tmp_path / "d.drl"
+    drl.write_text("M48\nMETRIC\nT1C0.8\nT2C0.8\n%\nT1\nX10.0Y10.0\n"
+                   f"X5.0Y0.0G85X8.0Y0.0\n{after}\nY6.0\nM30\n")
+    holes, slots, g85 = read_drill(drl)
+    assert (slots, g85) == (0, [8])
+    assert [(h.x, h.y) for h in holes] == [(10.0, 10.0), hole, (hole[0], 6.0)]
+
+
+def test_a_slot_whose_end_leaves_out_a_coordinate_ends_on_its_start_line(tmp_path):
+    """X5Y1G85X8: the slot runs along Y = 1 and the hit after it at Y2 is at X = 8."""
+    from seeds.gerber import read_drill
+    drl = tmp_path / "d.drl"
+    drl.write_text("M48\nMETRIC\nT1C0.8\n%\nT1\nX10.0Y10.0\nX5.0Y1.0G85X8.0\nY2.0\n"
+                   "X9.0\nM30\n")
+    holes, _, _ = read_drill(drl)
+    assert [(h.x, h.y) for h in holes] == [(10.0, 10.0), (8.0, 2.0), (9.0, 2.0)]
+
+
 def test_a_drill_file_of_slots_only_gives_no_drill_package(tmp_path):
     (tmp_path / "c.gbr").write_text(BOARD)
     (tmp_path / "d.drl").write_text("M48\nMETRIC\nT1C0.8\n%\nT1\nX5.0Y0.0G85X8.0Y0.0\nM30\n")
