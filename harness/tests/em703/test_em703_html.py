@@ -7,8 +7,11 @@ is stepped to its end through the page's interface `window.em703` and must
 give what `em703 sim` prints for it; the frame text the page shows is `em703
 list`'s, in Latin and in the report's letters; the demo page draws (a
 screenshot of its field that is not blank), plays, steps back, logs no
-error and makes no request but for its own file. A bad tape stops the
-command at its row and leaves no page.
+error and makes no request but for its own file. Played on a clock the
+test moves (its own requestAnimationFrame and performance.now), the
+carriage stands part way round an arc where the machine is, the part drawn
+on the side the arc turns. A bad tape stops the command at its row and
+leaves no page.
 
 Without a browser these tests skip, saying why; under CI (CI=true) they fail.
 """
@@ -331,21 +334,27 @@ def test_the_strip_is_em703_views_rows_with_the_frame_under_way_highlighted(
                 assert [int(line[:5]) for line in lit] == want, (tape, state)
 
 
-def _ink(browser) -> list[str]:
-    """The field's drawing canvas as rows of "#" (drawn black, the tool) and "."."""
+def _ink(browser, canvas: str = "drawing") -> list[str]:
+    """A canvas of the field (the drawing or the carriage) as rows of "#" (drawn
+    black, the tool), "r" (the carriage's red), "b" (the start point's blue)
+    and "."."""
     return browser.execute_script(
-        "var c = document.getElementById('drawing'), w = c.width, h = c.height;"
+        "var c = document.getElementById(arguments[0]), w = c.width, h = c.height;"
         "var d = c.getContext('2d').getImageData(0, 0, w, h).data, rows = [];"
         "for (var y = 0; y < h; y++) { var s = '';"
-        "  for (var x = 0; x < w; x++) { var p = 4 * (y * w + x);"
-        "    s += d[p + 3] > 128 && d[p] < 64 && d[p + 1] < 64 && d[p + 2] < 64 ? '#' : '.'; }"
-        "  rows.push(s); } return rows;")
+        "  for (var x = 0; x < w; x++) { var p = 4 * (y * w + x), r = d[p], g = d[p + 1],"
+        "      b = d[p + 2], a = d[p + 3];"
+        "    s += a > 128 && r < 64 && g < 64 && b < 64 ? '#' :"
+        "         a > 64 && r > 160 && g < 64 && b < 96 ? 'r' :"
+        "         a > 64 && r < 64 && b > 160 ? 'b' : '.'; }"
+        "  rows.push(s); } return rows;", canvas)
 
 
-def _box(ink: list[str]) -> tuple[int, int, int, int]:
-    """Left, right, top and bottom pixel of the ink."""
-    cols = [x for row in ink for x, c in enumerate(row) if c == "#"]
-    rows = [y for y, row in enumerate(ink) if "#" in row]
+def _box(ink: list[str], mark: str = "#") -> tuple[int, int, int, int]:
+    """Left, right, top and bottom pixel of the ink (or of another mark of _ink)."""
+    cols = [x for row in ink for x, c in enumerate(row) if c == mark]
+    rows = [y for y, row in enumerate(ink) if mark in row]
+    assert cols, f"no {mark!r} on the canvas"
     return min(cols), max(cols), min(rows), max(rows)
 
 
@@ -506,6 +515,116 @@ def test_play_runs_at_the_machines_speeds(em703_exe, tmp_path, browser) -> None:
         most = ms / 60000 * speed / minutes            # frames the machine runs in that time
         assert 1 <= state["executed"] <= most + 1e-6, (key, state["executed"], most)
         assert not state["done"] and not browser.execute_script("return em703.playing()")
+
+
+FRAME_CLOCK = """(function () {
+  var now = 1000, waiting = [];
+  Object.defineProperty(performance, 'now', { configurable: true,
+                                              value: function () { return now; } });
+  window.requestAnimationFrame = function (f) { waiting.push(f); return waiting.length; };
+  window.em703Clock = function (ms) {
+    now += ms;
+    var run = waiting;
+    waiting = [];
+    run.forEach(function (f) { f(now); });
+    return run.length;
+  };
+})();"""
+
+
+@pytest.fixture
+def frame_clock(browser):
+    """Pages opened while it lasts run on the test's clock: performance.now()
+    stands still and the animation's frames wait until em703Clock(ms) moves
+    the clock ms on and runs them at the new time."""
+    script = browser.execute_cdp_cmd("Page.addScriptToEvaluateOnNewDocument",
+                                      {"source": FRAME_CLOCK})
+    try:
+        yield
+    finally:
+        browser.execute_cdp_cmd("Page.removeScriptToEvaluateOnNewDocument",
+                                {"identifier": script["identifier"]})
+
+
+def _cross(ink: list[str], mark: str) -> tuple[float, float, int, int]:
+    """The centre, width and height of a cross (the pixels of one mark)."""
+    left, right, top, bottom = _box(ink, mark)
+    return (left + right) / 2, (top + bottom) / 2, right - left + 1, bottom - top + 1
+
+
+def test_playing_the_carriage_runs_round_arcs_and_circles_the_way_they_turn(
+        em703_exe, tmp_path, browser, frame_clock) -> None:
+    """Played on the test's clock and stopped part of the way through an arc,
+    the carriage (a red cross of two bars) stands where the machine is on the
+    arc, and the part of the arc it has drawn is black from the arc's start
+    the way the arc turns, and nowhere else on its circle: a full circle
+    (K11 or K13 without DX and DY) a quarter of the way, counter-clockwise
+    and clockwise, and a clockwise quarter arc a third of the way."""
+    cond = encode([Frame(x=1000, k=11), Frame(x=1000, k=13),
+                   Frame(y=-1000, dx=-1000, dy=1000, k=13), Frame(dx=1000, dy=-1000, k=20)])
+    job = write_job(tmp_path, "TURN", {"cond": cond}, {})
+    open_page(browser, page_of(em703_exe, job, tmp_path / "turn.html"))
+    # Millimetres to pixels: the carriage at rest at the start point and at
+    # the end of frame 3, (-10, 10) mm.
+    browser.execute_script("em703.select('cond')")
+    x0, y0, *size = _cross(_ink(browser, "carriage"), "r")
+    assert 19 <= min(size) and max(size) <= 24, size
+    browser.execute_script("em703.seek(3)")
+    x3, y3, *size = _cross(_ink(browser, "carriage"), "r")
+    assert 19 <= min(size) and max(size) <= 24, size
+    assert x3 < x0 - 200 and y3 < y0 - 200, (x0, y0, x3, y3)
+
+    def pixel(x_mm: float, y_mm: float) -> tuple[int, int]:
+        return round(x0 + x_mm / -10 * (x3 - x0)), round(y0 + y_mm / 10 * (y3 - y0))
+
+    def on(cx: float, cy: float, degrees: float) -> tuple[int, int]:   # on a 10 mm circle
+        return pixel(cx + 10 * math.cos(math.radians(degrees)),
+                     cy + 10 * math.sin(math.radians(degrees)))
+
+    circle = 2 * math.pi * 10 / 1500                        # minutes at 1.5 m/min
+    # executed before, minutes of the arc, the part run, the centre, degrees
+    # from the centre at the start, and after the part run (signed)
+    for before, minutes, part, (cx, cy), start, turn in (
+            (0, circle, 1 / 4, (-10, 0), 0, 90), (1, circle, 1 / 4, (-10, 0), 0, -90),
+            (2, circle / 4, 1 / 3, (0, 10), -90, -30)):
+        ms = part * minutes * 60000 / 10                    # at x10
+        ran = browser.execute_script(
+            "em703.seek(arguments[0]); em703.play(10); return em703Clock(arguments[1]);",
+            before, ms)
+        state = browser.execute_script("return em703.state()")
+        assert ran >= 1 and state["executed"] == before, (before, ran, state)
+        assert browser.execute_script("return em703.playing()")
+        ink = _ink(browser, "carriage")
+        browser.execute_script("em703.pause()")
+        x, y, *size = _cross(ink, "r")
+        want = on(cx, cy, start + turn)
+        assert abs(x - want[0]) <= 1.5 and abs(y - want[1]) <= 1.5, (before, (x, y), want)
+        assert 19 <= min(size) and max(size) <= 24, (before, size)
+        mx, my = on(cx, cy, start + turn / 2)
+        assert ink[my][mx] == "#", (before, "not drawn half way", mx, my)
+        for degrees in range(start + turn + (20 if turn > 0 else -20),
+                             start + (340 if turn > 0 else -340), 20 if turn > 0 else -20):
+            px, py = on(cx, cy, degrees)
+            if 3 <= px < len(ink) - 3 and 3 <= py < len(ink) - 3:
+                near = "".join(row[px - 3:px + 4] for row in ink[py - 3:py + 4])
+                assert "#" not in near, (before, "drawn at", degrees)
+
+
+def test_the_start_point_is_a_blue_cross_of_two_bars_where_the_carriage_starts(
+        em703_exe, tmp_path, browser) -> None:
+    """The field shows the start point as a blue cross, a bar across and a
+    bar up, 17 pixels each, centred where the carriage stands before the
+    first frame, and again when the tape has run and gone back to the
+    start."""
+    small = encode([Frame(dx=2000, dy=1000, k=20), Frame(dx=-2000, dy=-1000, k=10)])
+    job = write_job(tmp_path, "START", {"small": small}, {})
+    open_page(browser, page_of(em703_exe, job, tmp_path / "start.html"))
+    x, y, *size = _cross(_ink(browser, "carriage"), "r")
+    for run in ("em703.select('small')", "em703.step(2); em703.seek(0)"):
+        browser.execute_script(run)
+        bx, by, *bsize = _cross(_ink(browser), "b")
+        assert abs(bx - x) <= 1 and abs(by - y) <= 1, (run, (bx, by), (x, y))
+        assert 16 <= min(bsize) and max(bsize) <= 19, (run, bsize)
 
 
 def test_the_go_button_runs_to_the_executed_frame_typed(em703_exe, tmp_path, browser) -> None:
