@@ -737,11 +737,12 @@ def _run_punch5121(args: argparse.Namespace) -> int:
                 sys.stdout.write(f"{f.dx} {f.dy} {f.dz} {f.speed} {f.aux_x} {f.aux_y} "
                                  f"{f.aux_z}\n")
             return 0
+        if not args.output:
+            print("punch5121: -o TAPE.ptp is required to punch (or --decode a tape)",
+                  file=sys.stderr)
+            return 2
         text = sys.stdin.read() if args.input == "-" else ascii_text(Path(args.input).read_bytes())
         data = punch_5121(_read_frames_text(text), even_shift=args.even_shift)
-        if not args.output:
-            print("punch5121: -o TAPE.ptp is required to punch", file=sys.stderr)
-            return 2
         write_whole(args.output, data, inputs=[args.input])
     except OSError as exc:
         print(f"punch5121: {exc.filename or args.input}: {exc.strerror or exc}", file=sys.stderr)
@@ -760,7 +761,8 @@ def add_punch5121(sub: argparse._SubParsersAction) -> None:
                     "5121 code of the Ural-1 paper's Table 6, or --decode one.  The "
                     "output of 'split --max 9999' is valid input.")
     p.add_argument("input", metavar="FRAMES", help="frame text ('-' = stdin), or a .ptp with --decode")
-    p.add_argument("-o", "--output", metavar="TAPE.ptp")
+    p.add_argument("-o", "--output", metavar="TAPE.ptp",
+                   help="the tape image to punch (required, but for --decode)")
     p.add_argument("--decode", action="store_true", help="print the frames of a tape image")
     p.add_argument("--even-shift", action="store_true",
                    help="move every even frame two rows along the tape (the reader "

@@ -502,6 +502,17 @@ def test_punch5121_takes_all_seven_fields(tmp_path: Path, capsys) -> None:
                                        f"[AUX_X [AUX_Y [AUX_Z]]]]]\n")
 
 
+def test_punch5121_without_a_tape_to_write_says_so_before_reading(tmp_path: Path,
+                                                                  capsys) -> None:
+    """Without -o there is nothing to punch to: exit 2 with what to add, before
+    the frames are read (a frame text with an error in it is not judged)."""
+    src = tmp_path / "f.txt"
+    src.write_text("1 2\nnot a frame\n")
+    assert main(["punch5121", str(src)]) == 2
+    assert capsys.readouterr().err == ("punch5121: -o TAPE.ptp is required to punch "
+                                       "(or --decode a tape)\n")
+
+
 def test_5121_reader_names_the_row() -> None:
     data = bytearray(s2.punch_5121([s2.Frame5121(12, 34)]))
     data[s2.LEADER_ROWS + 2] = 0b0010                       # not a 5121 tetrad
