@@ -399,7 +399,8 @@ def _entity_items_of(e: Any, origin: Point, problems: list[str], labels: list[La
                 ve.dxf.handle = e.dxf.handle
             out += _entity_items(ve, origin, problems, labels, budget, blocks + (name,))
         return out
-    problems.append(f"{_where(e)}: cannot map a {kind}; left out")
+    article = "an" if kind and kind[0] in "AEIOU" else "a"
+    problems.append(f"{_where(e)}: cannot map {article} {kind}; left out")
     return []
 
 

@@ -37,8 +37,10 @@ def test_the_drawing_becomes_the_known_boards_cards() -> None:
     assert _data_cards(deck) == _data_cards(seed001.known_deck())
     assert conv.ordered
     # reported with handle and layer: the ellipse, the point, the macro, the hint
-    assert any(p.startswith("ELLIPSE #") and "layer OUTLINE" in p for p in conv.problems)
-    assert any(p.startswith("POINT #") and "layer OUTLINE" in p for p in conv.problems)
+    assert any(p.startswith("ELLIPSE #") and p.endswith("OUTLINE: cannot map an ELLIPSE; "
+                                                         "left out") for p in conv.problems)
+    assert any(p.startswith("POINT #") and p.endswith("OUTLINE: cannot map a POINT; left out")
+               for p in conv.problems)
     assert any("macro 'OUT 1' after FIRST" in p for p in conv.problems)
     assert any("'DRILL 0.8 MM' is not a label" in p and "layer NOTES" in p for p in conv.problems)
     assert len(conv.problems) == 4

@@ -146,15 +146,18 @@ def test_quoted_messages_are_the_tools(tmp_path) -> None:
     assert got == f"equidistant: notch.crd: {quoted}\n", (quoted, got)
 
     readme = " ".join((ROOT / "README.md").read_text().split())
-    assert "split --max 9999 98132 87647 | python -m seeds punch5121 - -o move.ptp` splits " \
+    assert "split --max 9999 98132 87647 | python -m seeds punch5121 - -o out/move.ptp` splits " \
            "seed 004's long move into its ten frames" in readme
     split = subprocess.run([sys.executable, "-m", "seeds", "split", "--max", "9999", "98132",
                             "87647"], capture_output=True, text=True, timeout=120)
-    punch = subprocess.run([sys.executable, "-m", "seeds", "punch5121", "-", "-o", "move.ptp"],
+    (tmp_path / "out").mkdir()
+    punch = subprocess.run([sys.executable, "-m", "seeds", "punch5121", "-", "-o",
+                            "out/move.ptp"],
                            input=split.stdout, cwd=tmp_path, capture_output=True, text=True,
                            timeout=120)
     assert punch.returncode == 0, punch.stderr
-    back = subprocess.run([sys.executable, "-m", "seeds", "punch5121", "--decode", "move.ptp"],
+    back = subprocess.run([sys.executable, "-m", "seeds", "punch5121", "--decode",
+                           "out/move.ptp"],
                           cwd=tmp_path, capture_output=True, text=True, timeout=120)
     assert len(back.stdout.splitlines()) == 10, back.stdout
 
