@@ -5,7 +5,7 @@
 !> standard error as one line naming the file and the row (or line).
 module em703_commands
     use, intrinsic :: iso_fortran_env, only: int64, real64, output_unit
-    use base_error, only: error_t, error_text, new_error, AT_ROW
+    use base_error, only: error_t, error_text, new_error, AT_ROW, no_memory
     use base_io, only: read_text, write_bytes, say
     use base_files, only: same_file, open_out, close_out, commit_file
     use base_sha256, only: sha256_hex
@@ -675,7 +675,8 @@ contains
         character(len=*), intent(in) :: path, frame
         character(len=:), allocatable :: bytes, prog, tmp, lines, why
         type(text_t) :: msgs, text
-        integer :: i, c, n, nerr, nprog, nblocks, k, j, high, nl
+        integer :: i, c, n, nerr, nprog, nblocks, k, j, high, nl, nrows, st
+        integer, allocatable :: rows(:)
         logical :: tape, eia
         call read_input(path, bytes, status)
         if (status /= EXIT_OK) return
@@ -703,7 +704,12 @@ contains
                   'a program as text must be ASCII)'
         end if
         if (tape) then
-            allocate(character(len=len(bytes)) :: prog)
+            allocate(character(len=len(bytes)) :: prog, stat=st)
+            if (st /= 0) call no_memory('the program read from the tape', int(len(bytes), int64))
+            ! rows(l): the tape row where line l of the text read from it
+            ! starts, for the faults (a line ends at each end of block)
+            allocate(rows(64))
+            nrows = 0
             n = 0
             do i = 1, len(bytes)
                 c = iachar(bytes(i:i))
@@ -731,14 +737,20 @@ contains
                         return
                     end if
                 end if
+                if (n == 0) then
+                    call start_line(i)
+                else if (prog(n:n) == achar(10)) then
+                    call start_line(i)
+                end if
                 n = n + 1
                 prog(n:n) = achar(iand(c, 127))
             end do
             prog = prog(1:n)
+            call iso_check(prog, msgs, nerr, nprog, nblocks, frame_kind(frame), rows(1:nrows))
         else
             prog = bytes
+            call iso_check(prog, msgs, nerr, nprog, nblocks, frame_kind(frame))
         end if
-        call iso_check(prog, msgs, nerr, nprog, nblocks, frame_kind(frame))
         if (nerr == 0 .and. nprog == 0) then
             call say(path // ': no program in it: a program is a line "%", its numbered ' // &
                      'blocks (N001 ...), and "%"')
@@ -762,6 +774,22 @@ contains
             nprog == 1)) // ' ' // str(nblocks) // trim(merge(' block, ', ' blocks,', nblocks == 1)) // &
             ' no tape error')
         call close_output('', text, tmp, status)
+
+    contains
+
+        !> Line nrows + 1 of the text read from the tape starts at its row.
+        subroutine start_line(row)
+            integer, intent(in) :: row
+            integer, allocatable :: more(:)
+            if (nrows == size(rows)) then
+                allocate(more(2 * size(rows)), stat=st)
+                if (st /= 0) call no_memory('the rows of the lines', 8 * int(size(rows), int64))
+                more(1:nrows) = rows(1:nrows)
+                call move_alloc(more, rows)
+            end if
+            nrows = nrows + 1
+            rows(nrows) = row
+        end subroutine start_line
     end function run_check
 
 end module em703_commands

@@ -477,14 +477,17 @@ contains
     !> blocks in frames of kind frame (FRAME_ADDRESS when absent). For
     !> each fault a message "block Nnnn (line L): ..." (or "line L: ...")
     !> is added to msgs (one a line); nprog, nblocks count what was read.
+    !> When the program was read from a tape, rows(L) is the tape row where
+    !> line L starts, and each message names it too: "(line L, tape row R)".
     !> A fixed or a variable frame is read slot by slot (a variable frame's
     !> empty slot is the previous block's value) into the address block it
     !> stands for, which is then checked as an address block is.
-    subroutine iso_check(prog, msgs, nerr, nprog, nblocks, frame)
+    subroutine iso_check(prog, msgs, nerr, nprog, nblocks, frame, rows)
         character(len=*), intent(in) :: prog
         type(text_t), intent(inout) :: msgs
         integer, intent(out) :: nerr, nprog, nblocks
         integer, intent(in), optional :: frame
+        integer, intent(in), optional :: rows(:)
         integer :: i, j, line, last_n, kind
         logical :: inside
         character(len=7) :: prev(NSLOTS)
@@ -733,11 +736,17 @@ contains
         subroutine fault(n, what)
             integer, intent(in) :: n
             character(len=*), intent(in) :: what
+            character(len=:), allocatable :: where
             nerr = nerr + 1
+            where = 'line ' // str(line)
+            if (present(rows)) then
+                if (line >= 1 .and. line <= size(rows)) where = where // ', tape row ' // &
+                                                                str(rows(line))
+            end if
             if (n > 0) then
-                call msgs%add('block N' // three(n) // ' (line ' // str(line) // '): ' // what)
+                call msgs%add('block N' // three(n) // ' (' // where // '): ' // what)
             else
-                call msgs%add('line ' // str(line) // ': ' // what)
+                call msgs%add(where // ': ' // what)
             end if
         end subroutine fault
 

@@ -130,6 +130,33 @@ def test_check_finds_codes_of_one_group(em703_exe, tmp_path) -> None:
     # the document's own example block, G02 G17 G45 G61 G83, is one of each group
 
 
+def test_a_fault_on_a_tape_names_the_tape_row_where_its_block_starts(em703_exe,
+                                                                      tmp_path) -> None:
+    """Read from a punched tape, a fault names the line of the text read from
+    it and the tape's row where that line starts, on ISO and on EIA tape,
+    with blank and delete rows among them (which the reader skips): the row
+    `em703 view` shows as the block's N."""
+    prog = tmp_path / "bad.iso"
+    prog.write_text("%\nN001 G17\nN002 G01 G02 X+001000 Y+000000\nN003 M07\n%\n")
+    for code, delete in (("iso", 0o377), ("eia", 0o177)):
+        tape = tmp_path / f"bad.{code}.ptp"
+        assert _em(em703_exe, "punch", "--code", code, prog, "-o", tape).returncode == 0
+        data = tape.read_bytes()
+        at = data.index(b"\n"[0] if code == "iso" else 0o200, 25)   # an end of block
+        tape.write_bytes(data[:at] + bytes([0, delete, 0]) + data[at:])
+        proc = _em(em703_exe, "check", tape)
+        assert proc.returncode == 1, proc.stderr
+        faults = proc.stderr.decode("utf-8").splitlines()
+        found = [re.match(rf"{re.escape(str(tape))}: block (N00\d) \(line (\d), tape row "
+                          r"(\d+)\): ", f) for f in faults]
+        assert all(found) and [m[1] for m in found] == ["N002", "N003"], faults
+        assert [m[2] for m in found] == ["3", "4"], faults
+        view = _em(em703_exe, "view", tape).stdout.decode()
+        n_rows = [int(r) for r in re.findall(r"^ +(\d+) \|.*\| \d{3}   N$", view, re.M)]
+        assert [int(m[3]) for m in found] == n_rows[1:], (code, faults, n_rows)
+        assert n_rows[1] == at + 3 + 2             # the three rows put in are counted
+
+
 def test_check_finds_a_comment_that_is_not_closed(em703_exe, tmp_path) -> None:
     prog = tmp_path / "open.iso"
     prog.write_text("%\n(a comment\nN001 G17\nN002 M02\n%\n(closed)\n")
