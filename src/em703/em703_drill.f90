@@ -62,7 +62,7 @@ contains
         type(pass_t), allocatable :: passes(:)
         integer, allocatable :: head(:), nxt(:), member(:)
         integer(int64), allocatable :: keys(:)
-        integer :: npass, nentry, i, r
+        integer :: npass, nentry, i, r, st
         real(real64) :: cell, box(4), b(4)
         type(walker_t) :: w
         type(error_t), allocatable :: err
@@ -100,7 +100,8 @@ contains
         end do
         if (open) call close_pass()
         ! each pad's box, kept at its first pass (a root is its pad's first)
-        allocate(pads(4, npass))
+        allocate(pads(4, npass), stat=st)
+        if (st /= 0) call no_memory('the pads', int(npass, int64) * 32)
         do i = 1, npass
             r = root(i)
             if (r == i) then
@@ -249,7 +250,8 @@ contains
                 if (st /= 0) call no_memory('the cells of the pads', int(8 * size(nxt), int64))
                 more(1:nentry) = nxt(1:nentry)
                 call move_alloc(more, nxt)
-                allocate(more(2 * size(member)))
+                allocate(more(2 * size(member)), stat=st)
+                if (st /= 0) call no_memory('the cells of the pads', int(8 * size(member), int64))
                 more(1:nentry) = member(1:nentry)
                 call move_alloc(more, member)
             end if
@@ -296,9 +298,10 @@ contains
         character(len=*), intent(in) :: title
         type(text_t), intent(inout) :: text
         integer(int64), allocatable :: sizes(:)
-        integer :: i, j, nsize, current, t
+        integer :: i, j, nsize, current, t, st
         ! the hole sizes, ascending
-        allocate(sizes(size(holes)))
+        allocate(sizes(size(holes)), stat=st)
+        if (st /= 0) call no_memory('the hole sizes', int(size(holes), int64) * 8)
         nsize = 0
         do i = 1, size(holes)
             if (any(sizes(1:nsize) == holes(i)%d)) cycle
