@@ -132,6 +132,17 @@ def test_memory_that_cannot_be_had_is_a_message_and_status_2(em703_exe, big_tape
                      f"{big_tape.stat().st_size} bytes"], err
 
 
+def test_a_tape_to_check_that_fits_once_but_not_twice_is_a_message(em703_exe, big_tape):
+    """em703 check holds a tape image and the program read from it: under a
+    limit that holds the 30 MB tape but not both, one line saying so and exit
+    2, not the Fortran runtime's allocation error."""
+    got = subprocess.run([str(em703_exe), "check", str(big_tape)], preexec_fn=_limit(45),
+                         stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, timeout=120)
+    assert (got.returncode, got.stderr.decode()) == (
+        2, "em703: not enough memory for the program read from the tape (about 28 MB more); "
+           "no half-made output is left\n")
+
+
 def _million_pad_deck() -> str:
     """101 rows of 9999 pads of 0.50 mm (the small-pad tool: each pad a dot)
     at 0.10 mm steps, 5 mm apart: 1 009 899 pads."""
