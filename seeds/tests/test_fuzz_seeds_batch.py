@@ -243,9 +243,11 @@ def hostile_drill(r: random.Random) -> str:
         what = r.random()
         if what < 0.2:
             lines.append(f"T{r.randint(0, tools + 1)}")
-        elif what < 0.85:
+        elif what < 0.75:
             lines.append(f"X{r.uniform(-100, 200):.3f}Y{r.uniform(-100, 200):.3f}"
                          if r.random() < 0.9 else f"X{r.choice(NUMS)}Y{r.choice(NUMS)}")
+        elif what < 0.85:                 # a coordinate left out: the last one's
+            lines.append(r.choice("XY") + f"{r.uniform(-100, 200):.3f}")
         else:
             lines.append(r.choice([f"G85X{r.uniform(0, 50):.3f}Y{r.uniform(0, 50):.3f}",
                                    "G00X1Y1\nM15\nG01X5Y5\nM16"]))
