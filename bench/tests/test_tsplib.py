@@ -81,9 +81,9 @@ def test_tenzor_tour_is_the_recorded_one(name, tenzor_exe, tmp_path):
     count, an undone kick's reversals included, which pcb3038 pinned, is
     pinned now by the demo's listing in docs/FILES.md. d1291 and fl1400
     also pin the kicks' window growing with what they gain (without it
-    they would stop long before the work bound, 3.2 % and 0.48 % over the
-    optimum), and d1291 the most it may grow to, two kicks an item (with
-    one, 2.6 % over). d2103 and pcb3038 are the
+    they would stop long before the work bound, 3.2 % and 0.49 % over the
+    optimum), and d1291 that it may grow to two kicks an item (with one,
+    2.6 % over). d2103 and pcb3038 are the
     two whose tapes have more than 2000 items, where the chain tries 16
     near ends, not 8.) One run each, timed by nothing. Whether a recorded
     tour is within 1 % of the optimum is the benchmark's verdict (`make
