@@ -164,8 +164,10 @@ MUTANTS = [
            "a failed kick puts back all but the first move length it changed"),
     Mutant("legacy/cmtrev.f", "         CALL CMDMV(I2)", "         CALL CMDMV(I1)",
            "a reversal keeps the length of the move into it, not the one out of it"),
-    # the kicks' window that grows with what they gain (caught by d1291's,
-    # pcb3038's and fl1400's recorded tours)
+    # the kicks' window that grows with what they gain (caught by where the
+    # kicks stop on traced runs, test_kicks.py: u1060's first shuffled deck
+    # and d1291 mirrored; d1291's, pcb3038's and fl1400's recorded tours
+    # caught them before their kicks came to stop at the work bound)
     Mutant("legacy/cmkick.f", "GKEPT / TLEN0 - 0.5D0", "GKEPT / TLEN0 - 1.0D0",
            "the kicks' window grows only beyond the first per cent they gained, "
            "not the first half per cent"),
