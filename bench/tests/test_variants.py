@@ -94,7 +94,7 @@ def test_a_recorded_deck_whose_near_ends_tie(name, tag, tenzor_exe, tmp_path):
     d1291's drilling grid and fl1400's clusters such ties are common; offered
     only a nearer end, these two decks end 19 and 11 units longer. (d1291's
     published deck pinned the rule until its kicks came to stop at their
-    work bound, 50 million, where its tour is the same either way.)"""
+    work bound, 50 million, where its tour is as long either way.)"""
     recorded = variants.ROOT / "bench" / "results" / "variants" / "variants.csv"
     row = next(r for r in csv.DictReader(recorded.open())
                if (r["instance"], r["deck"]) == (name, tag))
