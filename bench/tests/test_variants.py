@@ -70,6 +70,13 @@ def test_unknown_instance_is_a_usage_error(capsys):
     assert "the instances are of bench/tsplib/" in capsys.readouterr().err
 
 
+def _recorded(name: str) -> dict[str, int]:
+    """The tour length of each deck of ``name`` in bench/results/variants/."""
+    recorded = variants.ROOT / "bench" / "results" / "variants" / "variants.csv"
+    with recorded.open(newline="") as f:
+        return {r["deck"]: int(r["length"]) for r in csv.DictReader(f) if r["instance"] == name}
+
+
 @pytest.mark.parametrize("name", ["d198", "d2103"])
 def test_the_recorded_decks_are_this_trees(name, tenzor_exe, tmp_path):
     """bench/results/variants/ was run on this tree: its tours of every deck
@@ -77,9 +84,7 @@ def test_the_recorded_decks_are_this_trees(name, tenzor_exe, tmp_path):
     kicks' least window (its shuffled orders come back from a far start
     point); d2103's tapes have more than 2000 items, where the chain tries
     16 near ends. A change to either leaves the recorded table stale."""
-    recorded = variants.ROOT / "bench" / "results" / "variants" / "variants.csv"
-    rows = {r["deck"]: int(r["length"]) for r in csv.DictReader(recorded.open())
-            if r["instance"] == name}
+    rows = _recorded(name)
     assert list(rows) == list(variants.TAGS)
     got = {v.tag: variants.run_variant(tenzor_exe, v, tmp_path).length
            for v in variants.variants(tsplib.load(name))}
@@ -95,8 +100,5 @@ def test_a_recorded_deck_whose_near_ends_tie(name, tag, tenzor_exe, tmp_path):
     only a nearer end, these two decks end 19 and 11 units longer. (d1291's
     published deck pinned the rule until its kicks came to stop at their
     work bound, 50 million, where its tour is as long either way.)"""
-    recorded = variants.ROOT / "bench" / "results" / "variants" / "variants.csv"
-    row = next(r for r in csv.DictReader(recorded.open())
-               if (r["instance"], r["deck"]) == (name, tag))
     deck = next(v for v in variants.variants(tsplib.load(name)) if v.tag == tag)
-    assert variants.run_variant(tenzor_exe, deck, tmp_path).length == int(row["length"])
+    assert variants.run_variant(tenzor_exe, deck, tmp_path).length == _recorded(name)[tag]
